@@ -1,0 +1,47 @@
+#pragma once
+// Physics, controller, sensor and fitness-rule parameters (paper 2.4, DESIGN.md
+// section 2). Defaults must keep robots of 1-50 spheres stable; each default's
+// origin is documented where it is chosen (see sim/README or the implementation).
+#include <cstdint>
+
+namespace robozoo {
+
+struct SimParams {
+  // Episode
+  int steps = 2500;                  ///< physics steps per evaluation (count)
+  double dt = 0.01;                  ///< physics step (s)
+  double gravity = 9.81;             ///< (m/s^2), along -z
+  uint32_t ode_seed = 0;             ///< dRandSetSeed value before the first step
+  int quickstep_iterations = 20;     ///< dWorldSetQuickStepNumIterations (count)
+  // Contacts and joints
+  double erp = 0.2;                  ///< world error reduction parameter
+  double cfm = 1e-5;                 ///< world constraint force mixing
+  double contact_erp = 0.2;          ///< contact ERP (soft contacts)
+  double contact_cfm = 1e-4;         ///< contact CFM (soft contacts)
+  double friction = 1.0;             ///< Coulomb friction coefficient mu
+  int max_contacts = 4;              ///< contact points per geom pair (count)
+  // Motors: velocity servo towards the CTRNN's target angle
+  double servo_gain = 10.0;          ///< target joint speed per rad of angle error (1/s)
+  double servo_max_speed = 10.0;     ///< cap on the commanded joint speed (rad/s)
+  double motor_force_per_mass = 0.5; ///< hinge torque limit per unit of mass moved ((N m)/kg);
+                                     ///< the limit is this times the smaller side's total mass
+  // Target and sensors
+  double target_x = 10.0;            ///< target position (m)
+  double target_y = 0.0;
+  double target_z = 0.0;
+  double distance_sensor_range = 20.0;  ///< distance at which the sensor reads 0 (m)
+  double time_sensor_frequency = 1.0;   ///< f of sin(2 pi f t) (Hz)
+  // Early stop and faults
+  double rest_linear_speed = 1e-3;   ///< a body is at rest below this speed (m/s)
+  double rest_angular_speed = 1e-3;  ///< ... and below this angular speed (rad/s)
+  int rest_steps = 50;               ///< all bodies at rest this many consecutive steps ends the run (count)
+  double max_linear_acceleration = 1000.0;   ///< fault above this (m/s^2)
+  double max_angular_acceleration = 5000.0;  ///< fault above this (rad/s^2)
+  // Rolling rules (paper 2.4)
+  bool rolling_contact_rule = true;  ///< rule (i): some sphere in ground contact > fraction of steps
+  double rolling_contact_fraction = 0.95;
+  bool rolling_spin_rule = true;     ///< rule (ii): |time-averaged angular velocity| of a body > threshold
+  double rolling_spin_threshold = 1.0;  ///< (rad/s)
+};
+
+}  // namespace robozoo

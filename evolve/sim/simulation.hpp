@@ -1,0 +1,83 @@
+#pragma once
+// ODE simulation of a grown robot (DESIGN.md section 2 and 4). The Robot is a
+// constant model; a Simulation holds the changing state. One Simulation owns one
+// ODE world; never step two worlds from two threads of one process (ODE's
+// dRandInt seed is process-global).
+#include <array>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "evolve/growth/robot.hpp"
+#include "evolve/sim/outcome.hpp"
+#include "evolve/sim/params.hpp"
+
+namespace robozoo {
+
+/// Result of a whole episode: what the fitness's d term and outcome come from.
+struct SimResult {
+  Outcome outcome = Outcome::Completed;
+  int steps_run = 0;                 ///< steps actually simulated (count)
+  double d_init = 0.0;               ///< initial COM distance to the target (m)
+  double d_final = 0.0;              ///< final COM distance, = d_init when invalidated (m)
+  double d = 0.0;                    ///< d_init - d_final (m)
+  std::vector<double> ground_contact_fraction;  ///< per sphere, steps touching ground / steps_run
+  std::vector<double> mean_angular_speed;       ///< per body, |time-averaged angular velocity| (rad/s)
+  double max_linear_acceleration = 0.0;         ///< largest seen (m/s^2)
+  double max_angular_acceleration = 0.0;        ///< largest seen (rad/s^2)
+};
+
+/// State observable after any step (for poses, replay and rendering).
+struct SimState {
+  int step = 0;                      ///< steps taken so far
+  double time = 0.0;                 ///< simulated time (s)
+  std::vector<Eigen::Vector3d> body_position;       ///< body origin = its centre of mass (m)
+  std::vector<Eigen::Vector4d> body_quaternion;     ///< (w, x, y, z)
+  std::vector<Eigen::Vector3d> sphere_center;       ///< world centre of every sphere (m)
+  std::vector<double> neuron_output;                ///< CTRNN outputs
+  std::vector<double> sensor_value;                 ///< robot.sensors order
+  std::vector<uint8_t> sphere_touching;             ///< touch contact this step, per sphere
+};
+
+class Simulation {
+ public:
+  /// Builds the ODE world for `robot` (which must outlive the Simulation) and
+  /// calls dRandSetSeed(params.ode_seed). Sensors are read once so state() is
+  /// valid before the first step.
+  Simulation(const Robot& robot, const SimParams& params);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// One physics step: sensors -> CTRNN -> servos -> collide -> quickstep ->
+  /// bookkeeping. Returns false once the episode is over (all steps run, early
+  /// stop, or a fault); further calls do nothing and return false.
+  bool step();
+  bool done() const;
+  const SimState& state() const;
+  /// The episode's result (rules applied); valid once done(), partial before.
+  SimResult result() const;
+
+  /// Per-stage wall time in seconds accumulated so far (for the benchmark).
+  struct Timing { double controller = 0, physics = 0, bookkeeping = 0; };
+  Timing timing() const;
+  void enable_timing(bool on);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Runs a whole episode.
+SimResult simulate(const Robot& robot, const SimParams& params);
+
+/// Steps the same bodies and joints with no controller, sensors, servo or
+/// bookkeeping (joint motors held at zero speed with the same force limit), for
+/// `steps` steps: the engine's limit, used as the benchmark's baseline.
+void simulate_bare(const Robot& robot, const SimParams& params, int steps);
+
+/// Stable 64-bit hash of all body positions and quaternions (exact bits).
+uint64_t pose_hash(const SimState& s);
+
+}  // namespace robozoo
