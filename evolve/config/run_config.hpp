@@ -1,0 +1,44 @@
+#pragma once
+// The resolved configuration of one run: everything an evaluation or a replay
+// needs. Serialised whole into run_t.config_json, so a run is reproducible from
+// its first message alone (DESIGN.md section 1).
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "evolve/fitness/evaluate.hpp"
+#include "evolve/neat/params.hpp"
+
+namespace robozoo {
+
+struct RunConfig {
+  Regime regime = Regime::FeedForward;  ///< feedforward (control) or recurrent (experimental)
+  int64_t seed = 1;                     ///< seed of the run's single generator
+  int generations = 500;                ///< generations to run (count)
+  NeatParams neat;                      ///< CPPN-NEAT parameters (population inside)
+  EvalParams eval;                      ///< growth, simulation and CPPN query parameters
+  int pose_every = 4;                   ///< publish every k-th step of a champion's trajectory (count)
+  bool publish_all = false;             ///< publish every genome, not only champions
+};
+
+/// Thrown for bad configuration: the message names the key.
+struct ConfigError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+/// The whole configuration as JSON (every key, resolved values).
+nlohmann::json config_to_json(const RunConfig& c);
+/// Overlays `j` onto `base`. Unknown keys, wrong types and out-of-range values
+/// throw ConfigError naming the key (e.g. "neat.population: must be >= 2, got -5").
+RunConfig config_from_json(const nlohmann::json& j, RunConfig base = RunConfig{});
+/// Reads a JSON (.json) or TOML (.toml) file and overlays it onto `base`.
+/// Throws ConfigError for an unreadable or malformed file, naming the file.
+RunConfig load_config_file(const std::string& path, RunConfig base = RunConfig{});
+/// Checks cross-field constraints (r_min <= r_init <= r_max, ...); throws ConfigError.
+void validate_config(const RunConfig& c);
+
+std::string regime_name(Regime r);       ///< "feedforward" / "recurrent"
+Regime regime_from_name(const std::string& s);  ///< throws ConfigError
+
+}  // namespace robozoo

@@ -1,0 +1,108 @@
+#include "evolve/config/run_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace robozoo {
+namespace {
+
+std::string error_of(const nlohmann::json& j) {
+  try {
+    config_from_json(j);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RunConfig, DefaultsRoundTripExactly) {
+  RunConfig c;
+  c.seed = -77;
+  c.eval.sim.friction = 0.1 + 0.2;  // not representable in short decimal
+  c.neat.hidden_activations = 0b101;
+  const nlohmann::json j = config_to_json(c);
+  const RunConfig d = config_from_json(nlohmann::json::parse(j.dump()));
+  EXPECT_EQ(config_to_json(d), j);
+  EXPECT_EQ(d.eval.sim.friction, 0.1 + 0.2);
+  EXPECT_EQ(d.seed, -77);
+  EXPECT_EQ(d.neat.hidden_activations, 0b101u);
+}
+
+TEST(RunConfig, DefaultsMatchDesign) {
+  const auto j = config_to_json(RunConfig{});
+  EXPECT_EQ(j["neat"]["population"], 150);
+  EXPECT_EQ(j["generations"], 500);
+  EXPECT_EQ(j["sim"]["steps"], 2500);
+  EXPECT_EQ(j["growth"]["cloud_points"], 629);
+  EXPECT_EQ(j["regime"], "feedforward");
+  EXPECT_EQ(j["neat"]["hidden_activations"],
+            nlohmann::json({"signed_sigmoid", "signed_cosine", "gaussian"}));
+}
+
+TEST(RunConfig, OverlayChangesOnlyGivenKeys) {
+  const auto c = config_from_json({{"regime", "recurrent"}, {"neat", {{"population", 20}}}});
+  EXPECT_EQ(c.regime, Regime::Recurrent);
+  EXPECT_EQ(c.neat.population, 20);
+  EXPECT_EQ(c.neat.add_node_probability, NeatParams{}.add_node_probability);
+}
+
+TEST(RunConfig, ErrorsNameTheKey) {
+  EXPECT_NE(error_of({{"nope", 1}}).find("nope: unknown key"), std::string::npos);
+  EXPECT_NE(error_of({{"neat", {{"populaton", 5}}}}).find("neat.populaton: unknown key"), std::string::npos);
+  EXPECT_NE(error_of({{"neat", {{"population", -5}}}}).find("neat.population: must be in [2,"),
+            std::string::npos);
+  EXPECT_NE(error_of({{"growth", {{"t_matter", 1.5}}}}).find("growth.t_matter"), std::string::npos);
+  EXPECT_NE(error_of({{"sim", {{"dt", "fast"}}}}).find("sim.dt: must be a number"), std::string::npos);
+  EXPECT_NE(error_of({{"regime", "sideways"}}).find("regime: unknown regime"), std::string::npos);
+  EXPECT_NE(error_of({{"growth", {{"r_min", 0.6}}}}).find("growth.r_min"), std::string::npos);
+  EXPECT_NE(error_of({{"neat", {{"hidden_activations", {"tanh"}}}}}).find("neat.hidden_activations"),
+            std::string::npos);
+  EXPECT_NE(error_of({{"sim", {{"rolling_spin_rule", 1}}}}).find("sim.rolling_spin_rule: must be true or false"),
+            std::string::npos);
+}
+
+std::string write_temp(const std::string& suffix, const std::string& text) {
+  std::string path = "/tmp/robozoo_config_test_" + std::to_string(::getpid()) + suffix;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(RunConfig, ReadsTomlAndJsonFiles) {
+  const auto toml = write_temp(".toml", "regime = \"recurrent\"\n[neat]\npopulation = 30\n[sim]\nfriction = 0.5\n");
+  const auto c = load_config_file(toml);
+  EXPECT_EQ(c.regime, Regime::Recurrent);
+  EXPECT_EQ(c.neat.population, 30);
+  EXPECT_EQ(c.eval.sim.friction, 0.5);
+  const auto json = write_temp(".json", R"({"generations": 7, "growth": {"max_spheres": 12}})");
+  const auto d = load_config_file(json);
+  EXPECT_EQ(d.generations, 7);
+  EXPECT_EQ(d.eval.growth.max_spheres, 12);
+  std::remove(toml.c_str());
+  std::remove(json.c_str());
+}
+
+TEST(RunConfig, BadFilesNameTheFile) {
+  EXPECT_THROW(load_config_file("/nonexistent/robozoo.json"), ConfigError);
+  const auto bad = write_temp(".json", "{ not json");
+  try {
+    load_config_file(bad);
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find(bad), std::string::npos);
+  }
+  const auto badtoml = write_temp(".toml", "[neat\npopulation = ");
+  EXPECT_THROW(load_config_file(badtoml), ConfigError);
+  const auto unknown = write_temp(".toml", "[sim]\nwobble = 3\n");
+  try {
+    load_config_file(unknown);
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("sim.wobble: unknown key"), std::string::npos);
+  }
+  for (const auto& p : {bad, badtoml, unknown}) std::remove(p.c_str());
+}
+
+}  // namespace
+}  // namespace robozoo
