@@ -1,0 +1,128 @@
+#include "evolve/app/run_command.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#include "evolve/config/run_config.hpp"
+#include "evolve/io/bus.hpp"
+#include "evolve/run/evolution.hpp"
+#include "evolve/run/pool_evaluator.hpp"
+
+namespace robozoo {
+
+namespace {
+/// The README's main job: a short run that finishes in about five minutes on 2 cores.
+RunConfig preset_config(const std::string& name) {
+  RunConfig c;
+  if (name == "short") {
+    c.neat.population = 60;
+    c.generations = 20;
+  } else if (name == "paper") {
+    // The paper's settings are the defaults.
+  } else {
+    throw ConfigError("--preset: unknown preset '" + name + "' (use short or paper)");
+  }
+  return c;
+}
+}  // namespace
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  app.add_option("--regime", o.regime, "feedforward (control: CPPNs without cycles) or recurrent (experimental)")
+      ->check(CLI::IsMember({"feedforward", "recurrent"}));
+  app.add_option("--seed", o.seed, "seed of the run's single random generator");
+  app.add_option("--population", o.population, "genomes per generation (paper: 150)")->check(CLI::Range(2, 1000000));
+  app.add_option("--generations", o.generations, "generations to run (paper: 500)")->check(CLI::Range(1, 1000000000));
+  app.add_option("--steps", o.steps, "physics steps of 0.01 s per evaluation (paper: 2500)")
+      ->check(CLI::Range(1, 1000000000));
+  app.add_option("--workers", o.workers, "worker processes evaluating genomes (default: number of cores)")
+      ->check(CLI::Range(1, 4096));
+  app.add_option("--config", o.config_file, "configuration file (.json or .toml) with any parameter of the method");
+  app.add_option("--preset", o.preset, "short (the README's ~5-minute job) or paper (the paper's sizes)");
+  app.add_option("--log", o.log_path, "the run's LCM log (default: runs/<run id>.lcmlog)");
+  app.add_option("--lcm-url", o.lcm_url, "publish live on this LCM URL (given alone: LCM's default URL)")
+      ->expected(0, 1)
+      ->default_str(kDefaultLcmUrl);
+  app.add_option("--pose-every", o.pose_every, "publish every k-th step of a new champion's trajectory")
+      ->check(CLI::Range(1, 1000000000));
+  app.add_flag("--publish-all", o.publish_all, "publish every genome and morphology, not only champions");
+  app.add_flag("--resume", o.resume, "continue the run of --log from its checkpoint");
+  app.add_option("--run-id", o.run_id, "identifier of the run (default: <regime>-s<seed>)");
+  app.add_option("--job-timeout", o.job_timeout, "seconds before a hung evaluation's worker is replaced")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--quiet,-q", o.quiet, "no progress lines");
+}
+
+int run_run_command(const CLI::App& app, const RunOptions& o) {
+  RunConfig config;
+  EvolveOptions opts;
+  try {
+    config = o.preset.empty() ? RunConfig{} : preset_config(o.preset);
+    if (!o.config_file.empty()) config = load_config_file(o.config_file, config);
+    if (app.count("--regime")) config.regime = regime_from_name(o.regime);
+    if (app.count("--seed")) config.seed = o.seed;
+    if (app.count("--population")) config.neat.population = o.population;
+    if (app.count("--generations")) config.generations = o.generations;
+    if (app.count("--steps")) config.eval.sim.steps = o.steps;
+    if (app.count("--pose-every")) config.pose_every = o.pose_every;
+    if (o.publish_all) config.publish_all = true;
+    validate_config(config);
+    opts.run_id = o.run_id;
+    opts.resume = o.resume;
+    if (app.count("--lcm-url")) opts.lcm_url = o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url;
+    const std::string id = o.run_id.empty() ? default_run_id(config) : o.run_id;
+    opts.log_path = o.log_path.empty() ? "runs/" + id + ".lcmlog" : o.log_path;
+    const auto parent = std::filesystem::path(opts.log_path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    if (!o.resume && std::filesystem::exists(opts.log_path + ".checkpoint") &&
+        std::filesystem::exists(opts.log_path)) {
+      // Refuse to silently overwrite a run that could be resumed.
+      std::cerr << "robozoo-evolve: " << opts.log_path
+                << " already holds a run; use --resume to continue it, or another --log\n";
+      return 2;
+    }
+  } catch (const ConfigError& e) {
+    std::cerr << "robozoo-evolve: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-evolve: " << e.what() << "\n";
+    return 2;
+  }
+
+  const int workers = o.workers > 0 ? o.workers : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  try {
+    // Workers are forked before anything else (no LCM, no open log in them).
+    PoolEvaluator evaluator(workers, config.eval, o.job_timeout);
+    std::unique_ptr<Evolution> evo;
+    try {
+      evo = std::make_unique<Evolution>(config, opts, evaluator);
+    } catch (const std::exception& e) {
+      std::cerr << "robozoo-evolve: " << e.what() << "\n";
+      return 2;
+    }
+    if (evo->finished()) {
+      std::cerr << "robozoo-evolve: run " << evo->run_id() << " in " << opts.log_path << " is already complete\n";
+      return 0;
+    }
+    if (!o.quiet) {
+      std::cerr << "robozoo-evolve: run " << evo->run_id() << " (" << regime_name(evo->config().regime)
+                << ", seed " << evo->config().seed << ", population " << evo->config().neat.population << ", "
+                << evo->config().generations << " generations, " << workers << " workers)"
+                << (evo->resumed() ? " resumed at generation " + std::to_string(evo->generation()) : "")
+                << "\n  log " << opts.log_path << "\n  checkpoint " << evo->checkpoint_path() << "\n"
+                << (opts.lcm_url.empty() ? "" : "  live on " + opts.lcm_url + "\n");
+    }
+    evo->run([&](const GenerationReport& r) {
+      if (!o.quiet) std::cerr << format_progress(r) << std::endl;
+    });
+    if (!o.quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-evolve: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace robozoo

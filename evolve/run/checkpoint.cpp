@@ -1,0 +1,114 @@
+#include "evolve/run/checkpoint.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "evolve/neat/population_json.hpp"
+
+namespace robozoo {
+
+namespace {
+std::runtime_error sys_error(const std::string& path, const std::string& what) {
+  return std::runtime_error(path + ": " + what + " (" + std::strerror(errno) + ")");
+}
+
+std::string folder_of(const std::string& path) {
+  const auto slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+}  // namespace
+
+void write_file_atomic(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw sys_error(tmp, "cannot create");
+  size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const auto err = sys_error(tmp, "write failed");
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      throw err;
+    }
+    done += static_cast<size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const auto err = sys_error(tmp, "cannot flush");
+    ::unlink(tmp.c_str());
+    throw err;
+  }
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const auto err = sys_error(path, "cannot rename the temporary file into place");
+    ::unlink(tmp.c_str());
+    throw err;
+  }
+  const int dfd = ::open(folder_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
+  }
+}
+
+void write_checkpoint(const std::string& path, const Checkpoint& c) {
+  nlohmann::json j;
+  j["format"] = "robozoo-checkpoint";
+  j["format_version"] = Checkpoint::kFormatVersion;
+  j["run_id"] = c.run_id;
+  j["software_version"] = c.software_version;
+  j["config"] = c.config;
+  j["population"] = population_state_to_json(c.population);
+  j["rng_state"] = c.rng_state;
+  j["evaluations"] = c.evaluations;
+  j["best_so_far"] = c.best_so_far;
+  j["last_champion_id"] = c.last_champion_id;
+  j["log_bytes"] = c.log_bytes;
+  j["log_events"] = c.log_events;
+  j["elapsed_seconds"] = c.elapsed_seconds;
+  j["finished"] = c.finished;
+  write_file_atomic(path, j.dump());
+}
+
+Checkpoint read_checkpoint(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read the checkpoint");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    const auto j = nlohmann::json::parse(ss.str());
+    if (j.value("format", "") != "robozoo-checkpoint")
+      throw std::runtime_error("not a robozoo checkpoint");
+    if (j.at("format_version").get<int>() != Checkpoint::kFormatVersion)
+      throw std::runtime_error("checkpoint format version " + j.at("format_version").dump() +
+                               " is not the supported " + std::to_string(Checkpoint::kFormatVersion));
+    Checkpoint c;
+    c.run_id = j.at("run_id").get<std::string>();
+    c.software_version = j.at("software_version").get<std::string>();
+    c.config = j.at("config");
+    c.population = population_state_from_json(j.at("population"));
+    c.rng_state = j.at("rng_state").get<std::string>();
+    c.evaluations = j.at("evaluations").get<int64_t>();
+    c.best_so_far = j.at("best_so_far").get<double>();
+    c.last_champion_id = j.at("last_champion_id").get<int64_t>();
+    c.log_bytes = j.at("log_bytes").get<int64_t>();
+    c.log_events = j.at("log_events").get<int64_t>();
+    c.elapsed_seconds = j.at("elapsed_seconds").get<double>();
+    c.finished = j.at("finished").get<bool>();
+    if (c.log_bytes < 0 || c.log_events < 0 || c.evaluations < 0)
+      throw std::runtime_error("negative counts");
+    return c;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": malformed checkpoint: " + e.what());
+  }
+}
+
+}  // namespace robozoo

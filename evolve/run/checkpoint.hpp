@@ -1,0 +1,38 @@
+#pragma once
+// The state of a run between two generations, written atomically (write a
+// temporary file, fsync, rename) after every generation, so that a run killed at
+// any moment resumes exactly (issue 4, DESIGN.md section 4).
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "evolve/neat/population.hpp"
+
+namespace robozoo {
+
+struct Checkpoint {
+  static constexpr int kFormatVersion = 1;
+  std::string run_id;
+  std::string software_version;
+  nlohmann::json config;            ///< the resolved configuration (config_to_json)
+  PopulationState population;       ///< the next generation to evaluate
+  std::string rng_state;            ///< Rng::state() after breeding it
+  int64_t evaluations = 0;          ///< cumulative evaluations so far (count)
+  double best_so_far = 0.0;         ///< best fitness since generation 0
+  int64_t last_champion_id = -1;    ///< champion of the last finished generation
+  int64_t log_bytes = 0;            ///< size of the log after the last finished generation
+  int64_t log_events = 0;           ///< events in the log after the last finished generation
+  double elapsed_seconds = 0.0;     ///< wall time spent so far (s)
+  bool finished = false;            ///< every generation done
+};
+
+/// Writes atomically: `path` holds either the old or the new checkpoint, never a mix.
+void write_checkpoint(const std::string& path, const Checkpoint& c);
+/// Throws std::runtime_error naming the path for a missing, unreadable or malformed file.
+Checkpoint read_checkpoint(const std::string& path);
+
+/// Writes `text` to `path` atomically (temporary file in the same folder, fsync, rename, fsync folder).
+void write_file_atomic(const std::string& path, const std::string& text);
+
+}  // namespace robozoo

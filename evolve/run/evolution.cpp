@@ -1,0 +1,241 @@
+#include "evolve/run/evolution.hpp"
+
+#include <sys/stat.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "evolve/fitness/evaluate.hpp"
+#include "evolve/sim/simulation.hpp"
+
+namespace robozoo {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string human_time(double s) {
+  if (!std::isfinite(s) || s < 0) return "?";
+  char buf[32];
+  const long t = std::lround(s);
+  if (t >= 3600)
+    std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t / 60) % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
+  return buf;
+}
+
+bool file_exists(const std::string& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0;
+}
+
+}  // namespace
+
+std::string default_run_id(const RunConfig& c) {
+  return regime_name(c.regime) + "-s" + std::to_string(c.seed);
+}
+
+std::string format_progress(const GenerationReport& r) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "gen %4d/%d  best %8.3f  mean %7.3f  species %2d  simulated %5.1f%%  %6.1f eval/s  "
+                "elapsed %s  remaining %s",
+                r.summary.generation + 1, r.generations_total, r.summary.best_fitness, r.summary.mean_fitness,
+                r.summary.num_species, 100.0 * r.simulated_share, r.evals_per_second,
+                human_time(r.elapsed_seconds).c_str(), human_time(r.remaining_seconds).c_str());
+  return buf;
+}
+
+Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Evaluator& evaluator)
+    : config_(config), options_(options), evaluator_(evaluator) {
+  if (options_.log_path.empty()) throw std::runtime_error("no log path given");
+  checkpoint_path_ = options_.checkpoint_path.empty() ? options_.log_path + ".checkpoint"
+                                                      : options_.checkpoint_path;
+  const GenomeLayout layout = robot_layout();
+  if (options_.resume && file_exists(checkpoint_path_)) {
+    Checkpoint c = read_checkpoint(checkpoint_path_);
+    RunConfig saved;
+    try {
+      saved = config_from_json(c.config);
+    } catch (const ConfigError& e) {
+      throw std::runtime_error(checkpoint_path_ + ": its configuration is invalid: " + e.what());
+    }
+    if (c.software_version != software_version())
+      throw std::runtime_error(checkpoint_path_ + ": written by robozoo " + c.software_version +
+                               ", this is " + software_version() + "; resume with that version");
+    config_ = saved;
+    run_id_ = c.run_id;
+    rng_.set_state(c.rng_state);
+    population_ = std::make_unique<Population>(config_.neat, config_.regime, layout, std::move(c.population));
+    evaluations_ = c.evaluations;
+    best_so_far_ = c.best_so_far;
+    last_champion_id_ = c.last_champion_id;
+    elapsed_before_ = c.elapsed_seconds;
+    finished_ = c.finished;
+    resumed_ = true;
+    if (!finished_) log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
+  } else {
+    validate_config(config_);
+    run_id_ = options_.run_id.empty() ? default_run_id(config_) : options_.run_id;
+    rng_ = Rng(static_cast<uint64_t>(config_.seed));
+    population_ = std::make_unique<Population>(config_.neat, config_.regime, layout, rng_);
+    log_.emplace(EventLogWriter::create(options_.log_path));
+    save_checkpoint();
+  }
+  if (!options_.lcm_url.empty() && !finished_) bus_ = std::make_unique<Bus>(options_.lcm_url);
+}
+
+Evolution::~Evolution() = default;
+
+int Evolution::generation() const { return population_->generation(); }
+
+void Evolution::emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime) {
+  log_->write(channel, bytes, utime);
+  if (bus_) bus_->publish(channel, bytes);
+}
+
+void Evolution::save_checkpoint() {
+  log_->sync();
+  Checkpoint c;
+  c.run_id = run_id_;
+  c.software_version = software_version();
+  c.config = config_to_json(config_);
+  c.population = population_->state();
+  c.rng_state = rng_.state();
+  c.evaluations = evaluations_;
+  c.best_so_far = best_so_far_;
+  c.last_champion_id = last_champion_id_;
+  c.log_bytes = log_->bytes();
+  c.log_events = log_->events();
+  c.elapsed_seconds = elapsed_before_ + elapsed_;
+  c.finished = finished_;
+  write_checkpoint(checkpoint_path_, c);
+}
+
+void Evolution::run(const std::function<void(const GenerationReport&)>& on_generation) {
+  while (step(on_generation)) {
+  }
+}
+
+void Evolution::publish_trajectory(const Genome& champion, int32_t generation, const EvalSummary& expected) {
+  const Robot robot = grow_genome(champion, config_.eval);
+  Simulation sim(robot, config_.eval.sim);
+  const int k = config_.pose_every;
+  auto pose = [&] {
+    const int64_t t = now_us();
+    emit(kChannelPose, encode_message(make_pose_message(run_id_, generation, champion.id, sim.state(), t)), t);
+  };
+  pose();  // step 0: the starting pose
+  while (sim.step()) {
+    if (sim.state().step % k == 0) pose();
+  }
+  if (sim.state().step % k != 0) pose();  // the final pose, whatever k
+  const SimResult r = sim.result();
+  // The trajectory must be exactly the evaluation the worker made.
+  if (r.d != expected.d || static_cast<int>(r.outcome) != static_cast<int>(expected.outcome) ||
+      r.steps_run != expected.steps_run)
+    throw std::logic_error("determinism violated: re-simulating genome " + std::to_string(champion.id) +
+                           " gave d = " + std::to_string(r.d) + " after " + std::to_string(r.steps_run) +
+                           " steps, its evaluation gave d = " + std::to_string(expected.d) + " after " +
+                           std::to_string(expected.steps_run));
+}
+
+bool Evolution::step(const std::function<void(const GenerationReport&)>& on_generation) {
+  if (finished_) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  const int32_t gen = population_->generation();
+  const std::vector<Genome>& genomes = population_->genomes();
+
+  const int64_t t_run = now_us();
+  emit(kChannelRun, encode_message(make_run_message(run_id_, config_, t_run)), t_run);
+
+  const auto te = std::chrono::steady_clock::now();
+  const std::vector<EvalSummary> results = evaluator_.evaluate(genomes);
+  const double eval_seconds = seconds_since(te);
+  if (results.size() != genomes.size())
+    throw std::logic_error("evaluator returned " + std::to_string(results.size()) + " results for " +
+                           std::to_string(genomes.size()) + " genomes");
+
+  GenerationSummary s;
+  s.generation = gen;
+  size_t champ = 0;
+  double sum = 0.0;
+  int simulated = 0;
+  for (size_t i = 0; i < results.size(); ++i) {
+    if (results[i].genome_id != genomes[i].id)
+      throw std::logic_error("evaluator returned results out of order");
+    sum += results[i].fitness;
+    if (results[i].fitness > results[champ].fitness) champ = i;
+    ++s.outcome_counts[static_cast<int>(results[i].outcome)];
+    simulated += results[i].outcome != Outcome::NotSimulated;
+  }
+  const double n = static_cast<double>(results.size());
+  s.mean_fitness = sum / n;
+  double ss = 0.0;
+  for (const auto& r : results) ss += (r.fitness - s.mean_fitness) * (r.fitness - s.mean_fitness);
+  s.stderr_fitness = results.size() > 1 ? std::sqrt(ss / (n - 1.0)) / std::sqrt(n) : 0.0;
+  s.best_fitness = results[champ].fitness;
+  best_so_far_ = gen == 0 ? s.best_fitness : std::max(best_so_far_, s.best_fitness);
+  s.best_so_far_fitness = best_so_far_;
+  evaluations_ += static_cast<int64_t>(results.size());
+  s.evaluations = evaluations_;
+  s.champion_id = genomes[champ].id;
+  s.num_species = static_cast<int32_t>(population_->species().size());
+  s.compatibility_threshold = population_->compatibility_threshold();
+  s.eval_seconds = eval_seconds;
+
+  const Genome& champion = genomes[champ];
+  auto publish_genome = [&](size_t i) {
+    const Genome& g = genomes[i];
+    const EvalSummary& r = results[i];
+    const int64_t t = now_us();
+    emit(kChannelGenome,
+         encode_message(make_genome_message(run_id_, gen, g, population_->species_of(i),
+                                            GenomeScore{r.fitness, r.r, r.d, r.outcome}, t)),
+         t);
+    const Robot robot = grow_genome(g, config_.eval);
+    const int64_t t2 = now_us();
+    emit(kChannelMorphology, encode_message(make_morphology_message(run_id_, gen, g.id, robot, t2)), t2);
+  };
+
+  s.generation_seconds = seconds_since(t0);
+  const int64_t t_gen = now_us();
+  emit(kChannelGeneration, encode_message(make_generation_message(run_id_, s, t_gen)), t_gen);
+  publish_genome(champ);
+  if (config_.publish_all)
+    for (size_t i = 0; i < genomes.size(); ++i)
+      if (i != champ) publish_genome(i);
+  if (champion.id != last_champion_id_ && results[champ].outcome != Outcome::NotSimulated)
+    publish_trajectory(champion, gen, results[champ]);
+  last_champion_id_ = champion.id;
+
+  std::vector<double> fitness(results.size());
+  for (size_t i = 0; i < results.size(); ++i) fitness[i] = results[i].fitness;
+  const bool last = gen + 1 >= config_.generations;
+  GenerationReport report;
+  report.summary = s;
+  if (last) {
+    finished_ = true;
+  } else {
+    population_->advance(fitness, rng_);
+  }
+  elapsed_ += seconds_since(t0);
+  save_checkpoint();
+
+  report.generations_total = config_.generations;
+  report.elapsed_seconds = elapsed_before_ + elapsed_;
+  report.evals_per_second = eval_seconds > 0 ? n / eval_seconds : 0.0;
+  const int done = gen + 1;
+  report.remaining_seconds = report.elapsed_seconds / done * (config_.generations - done);
+  report.simulated_share = simulated / n;
+  if (on_generation) on_generation(report);
+  return true;
+}
+
+}  // namespace robozoo

@@ -1,0 +1,90 @@
+#pragma once
+// The evolution process of robozoo-evolve (issue 4): CPPN-NEAT on directed
+// displacement, every event written to the run's LCM log and, when live, to
+// the bus; a checkpoint after every generation.
+#include <functional>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "evolve/config/run_config.hpp"
+#include "evolve/core/rng.hpp"
+#include "evolve/io/bus.hpp"
+#include "evolve/io/event_log.hpp"
+#include "evolve/messages/build.hpp"
+#include "evolve/neat/population.hpp"
+#include "evolve/run/checkpoint.hpp"
+#include "evolve/run/evaluator.hpp"
+
+namespace robozoo {
+
+struct EvolveOptions {
+  std::string run_id;           ///< empty: "<regime>-s<seed>"
+  std::string log_path;         ///< the run's LCM log
+  std::string checkpoint_path;  ///< empty: log_path + ".checkpoint"
+  std::string lcm_url;          ///< empty: no live publishing
+  bool resume = false;          ///< continue from the checkpoint
+};
+
+/// What happened in one generation (for progress output and tests).
+struct GenerationReport {
+  GenerationSummary summary;
+  int32_t generations_total = 0;
+  double evals_per_second = 0.0;
+  double elapsed_seconds = 0.0;
+  double remaining_seconds = 0.0;  ///< estimate
+  double simulated_share = 0.0;    ///< share of robots sent to the simulator
+};
+
+/// One line of progress for a generation.
+std::string format_progress(const GenerationReport& r);
+
+/// Default run id of a configuration.
+std::string default_run_id(const RunConfig& c);
+
+class Evolution {
+ public:
+  /// Starts a run, or (options.resume) continues one from its checkpoint; the
+  /// configuration then comes from the checkpoint and `config` must match it.
+  /// Throws std::runtime_error with a clear message on unusable files.
+  Evolution(const RunConfig& config, const EvolveOptions& options, Evaluator& evaluator);
+  ~Evolution();
+
+  /// Runs the remaining generations; calls `on_generation` after each.
+  void run(const std::function<void(const GenerationReport&)>& on_generation = {});
+  /// Runs one generation; returns false when the run is already complete.
+  bool step(const std::function<void(const GenerationReport&)>& on_generation = {});
+
+  bool finished() const { return finished_; }
+  int generation() const;
+  const std::string& run_id() const { return run_id_; }
+  const std::string& checkpoint_path() const { return checkpoint_path_; }
+  const RunConfig& config() const { return config_; }
+  /// True when the constructor resumed from a checkpoint.
+  bool resumed() const { return resumed_; }
+
+ private:
+  void emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime);
+  void save_checkpoint();
+  void publish_trajectory(const Genome& champion, int32_t generation, const EvalSummary& expected);
+
+  RunConfig config_;
+  EvolveOptions options_;
+  Evaluator& evaluator_;
+  std::string run_id_;
+  std::string checkpoint_path_;
+  Rng rng_;
+  std::unique_ptr<Population> population_;
+  std::optional<EventLogWriter> log_;
+  std::unique_ptr<Bus> bus_;
+  int64_t evaluations_ = 0;
+  double best_so_far_ = 0.0;
+  int64_t last_champion_id_ = -1;
+  double elapsed_before_ = 0.0;   // from earlier sessions of a resumed run
+  double elapsed_ = 0.0;
+  bool finished_ = false;
+  bool resumed_ = false;
+};
+
+}  // namespace robozoo
