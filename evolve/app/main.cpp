@@ -28,8 +28,15 @@ int main(int argc, char** argv) {
   robozoo::add_eval_options(*eval_cmd, eval);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+    std::cerr << "robozoo-evolve: " << e.what() << " (see --help)\n";
+    return 2;
   }
   if (eval_cmd->parsed()) return robozoo::run_eval_command(eval);
   return robozoo::run_run_command(app, run);

@@ -1,0 +1,181 @@
+// robozoo-evolve as a user runs it: determinism across worker counts, kill -9
+// and resume, a worker killed on purpose, live publishing recorded by LCM's own
+// lcm-logger inside a private network namespace, bad configuration.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+
+#include "evolve/io/event_log.hpp"
+#include "evolve/io/log_compare.hpp"
+#include "evolve/messages/build.hpp"
+#include "evolve/run/checkpoint.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo {
+namespace {
+
+using namespace robozoo::testing;
+
+// A small run that still sends robots to the simulator: 4 generations of 24.
+const std::vector<std::string> kSmall = {"--seed", "7", "--population", "24", "--generations", "4",
+                                         "--steps", "400", "--quiet"};
+
+std::vector<std::string> evolve_args(const std::string& log, int workers,
+                                     std::vector<std::string> extra = {}) {
+  std::vector<std::string> a = {bin("robozoo-evolve"), "--log", log, "--workers", std::to_string(workers)};
+  a.insert(a.end(), kSmall.begin(), kSmall.end());
+  a.insert(a.end(), extra.begin(), extra.end());
+  return a;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += "'" + x + "' ";
+  return s;
+}
+
+int run_evolve(const std::string& log, int workers, std::vector<std::string> extra = {}) {
+  const auto o = run_shell(join(evolve_args(log, workers, std::move(extra))));
+  EXPECT_EQ(o.status, 0) << o.output;
+  return o.status;
+}
+
+size_t count_channel(const LogContents& log, const std::string& channel) {
+  size_t n = 0;
+  for (const auto& r : log.records) n += r.channel == channel;
+  return n;
+}
+
+TEST(EvolveCli, HelpDocumentsEveryFlag) {
+  const auto o = run_shell(bin("robozoo-evolve") + " --help");
+  EXPECT_EQ(o.status, 0);
+  for (const char* flag : {"--regime", "--seed", "--population", "--generations", "--steps", "--workers", "--config",
+                           "--log", "--lcm-url", "--pose-every", "--publish-all", "--resume"})
+    EXPECT_NE(o.output.find(flag), std::string::npos) << flag;
+}
+
+TEST(EvolveCli, OneAndTwoWorkersGiveIdenticalLogs) {
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "w1.lcmlog", 1), 0);
+  ASSERT_EQ(run_evolve(dir / "w2.lcmlog", 2), 0);
+  const auto a = read_event_log(dir / "w1.lcmlog"), b = read_event_log(dir / "w2.lcmlog");
+  EXPECT_EQ(first_log_difference(a, b), "");
+  // The log holds what the issue asks for.
+  EXPECT_EQ(count_channel(a, kChannelRun), 4u);
+  EXPECT_EQ(count_channel(a, kChannelGeneration), 4u);
+  EXPECT_EQ(count_channel(a, kChannelGenome), 4u);
+  EXPECT_EQ(count_channel(a, kChannelMorphology), 4u);
+  EXPECT_EQ(a.records.front().channel, kChannelRun);
+  // Every event decodes with the generated types.
+  for (const auto& r : a.records) {
+    std::vector<uint8_t> norm;
+    EXPECT_TRUE(normalize_message(r.channel, r.data, norm)) << r.channel;
+  }
+}
+
+TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2), 0);
+  const std::string log = dir / "cut.lcmlog";
+  // Kill at several moments: right after start, and mid-run.
+  for (int delay_ms : {150, 900}) {
+    const pid_t pid = spawn(evolve_args(log, 2), dir / "out.txt");
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    ::kill(pid, SIGKILL);
+    wait_status(pid);
+    // Its workers die with it (they watch their parent); give them a moment.
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    ASSERT_EQ(run_evolve(log, 2, {"--resume"}), 0);
+    EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "")
+        << "killed after " << delay_ms << " ms";
+    std::remove(log.c_str());
+    std::remove((log + ".checkpoint").c_str());
+  }
+}
+
+TEST(EvolveCli, ResumeOfAFinishedRunChangesNothing) {
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "a.lcmlog", 1), 0);
+  const std::string before = read_file(dir / "a.lcmlog");
+  const auto o = run_shell(join(evolve_args(dir / "a.lcmlog", 1, {"--resume"})));
+  EXPECT_EQ(o.status, 0);
+  EXPECT_EQ(read_file(dir / "a.lcmlog"), before);
+}
+
+TEST(EvolveCli, RefusesToOverwriteAResumableRun) {
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "a.lcmlog", 1), 0);
+  const auto o = run_shell(join(evolve_args(dir / "a.lcmlog", 1)));
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.output.find("--resume"), std::string::npos);
+}
+
+TEST(EvolveCli, WorkerKilledOnPurposeChangesNothing) {
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2), 0);
+  const std::string log = dir / "hit.lcmlog";
+  const pid_t pid = spawn(evolve_args(log, 2), dir / "out.txt");
+  int killed = 0;
+  for (int i = 0; i < 200 && killed < 3; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const auto kids = children_of(pid);
+    if (!kids.empty() && i % 5 == 4) {
+      ::kill(kids.front(), SIGKILL);
+      ++killed;
+    }
+  }
+  ASSERT_EQ(wait_status(pid), 0) << read_file(dir / "out.txt");
+  EXPECT_GE(killed, 1);
+  EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "");
+}
+
+TEST(EvolveCli, LogReplaysThroughLcmLogplayer) {
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "a.lcmlog", 2), 0);
+  const std::string out = dir / "played.lcmlog";
+  const auto o = run_shell("lcm-logplayer -s 1000 -l 'file://" + out + "?mode=w' '" + (dir / "a.lcmlog") + "'");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(first_log_difference(read_event_log(dir / "a.lcmlog"), read_event_log(out)), "");
+}
+
+TEST(EvolveCli, LiveRunIsRecordedCompletelyByLcmLogger) {
+  TempDir dir;
+  const std::string url = "udpm://239.255.76.67:7667?ttl=0";
+  const std::string script =
+      "ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
+      "(lcm-logger -f -l '" + url + "' '" + (dir / "bus.lcmlog") + "' >/dev/null 2>&1 & L=$!; sleep 1; " +
+      join(evolve_args(dir / "own.lcmlog", 2, {"--lcm-url", url})) +
+      "; S=$?; sleep 1; kill -INT $L; wait $L; exit $S)";
+  const auto o = run_shell("unshare -n sh -c \"" + script + "\"");
+  ASSERT_EQ(o.status, 0) << o.output;
+  const auto own = read_event_log(dir / "own.lcmlog"), bus = read_event_log(dir / "bus.lcmlog");
+  EXPECT_EQ(first_log_difference(own, bus), "");
+  EXPECT_GT(count_channel(bus, kChannelGeneration), 0u);
+}
+
+TEST(EvolveCli, BadConfigurationIsOneLineAndExitTwoAndLeavesNothing) {
+  TempDir dir;
+  const std::string unknown = dir / "unknown.toml", range = dir / "range.json";
+  std::ofstream(unknown) << "[neat]\nwobble = 1\n";
+  std::ofstream(range) << R"({"growth": {"t_matter": 1.5}})";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--config", unknown}, "neat.wobble: unknown key"},
+      {{"--config", range}, "growth.t_matter"},
+      {{"--config", dir / "missing.toml"}, "cannot read"},
+      {{"--population", "-5"}, "population"},
+      {{"--regime", "sideways"}, "regime"},
+  };
+  for (const auto& [args, expect] : cases) {
+    const std::string log = dir / "bad.lcmlog";
+    std::vector<std::string> a = {bin("robozoo-evolve"), "--log", log};
+    a.insert(a.end(), args.begin(), args.end());
+    const auto o = run_shell(join(a));
+    EXPECT_EQ(o.status, 2) << o.output;
+    EXPECT_NE(o.output.find(expect), std::string::npos) << o.output;
+    EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+    EXPECT_FALSE(file_exists(log));
+    EXPECT_FALSE(file_exists(log + ".checkpoint"));
+  }
+}
+
+}  // namespace
+}  // namespace robozoo
