@@ -2,102 +2,122 @@
 // A CPPN-NEAT population: speciation with a dynamic threshold, fitness sharing,
 // drop-off age, survival threshold, elitism, crossover and mutation.
 // All randomness comes from the Rng passed in.
+//
+// One generation, as Population::advance runs it (DESIGN.md section 2; where
+// the paper and DESIGN.md are silent the C++ HyperNEAT package and the NEAT
+// paper decide, as noted):
+//  1. Each species' members are ranked by raw fitness (stable: ties keep
+//     population order). The generation champion is the first genome with the
+//     highest fitness.
+//  2. A species improves when its best member beats its best fitness ever; the
+//     champion's species always counts as improved (HyperNEAT). A species that
+//     has not improved for dropoff_age generations is stagnant.
+//  3. Explicit fitness sharing: a species' share is its mean raw fitness
+//     (times dropoff_factor when stagnant); offspring are allocated in
+//     proportion by largest remainder, summing exactly to the population. The
+//     champion's species gets at least one (taken from the largest allocation).
+//  4. The next generation starts with an unchanged copy of the generation
+//     champion; then, species by species, an unchanged copy of the species
+//     champion when the species has at least species_elitism_min_offspring
+//     offspring (the generation champion counts as its species' copy), and the
+//     rest as children of the best num_parents() members: with
+//     mutate_only_probability (or when only one parent) a mutated copy of one
+//     parent, else a mutated crossover of two different parents (the second
+//     from another species' champion with interspecies_mating_probability).
+//  5. Every species' representative becomes its champion of the generation
+//     just evaluated; the new generation is speciated in order against them
+//     (NEAT speciates offspring as they are born), then the threshold adjusted.
+// Copies get fresh ids: every genome of a run has its own id, increasing.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "evolve/core/rng.hpp"
 #include "evolve/cppn/genome.hpp"
+#include "evolve/neat/compatibility.hpp"
+#include "evolve/neat/crossover.hpp"
+#include "evolve/neat/initial_genome.hpp"
+#include "evolve/neat/innovation.hpp"
+#include "evolve/neat/mutation.hpp"
 #include "evolve/neat/params.hpp"
+#include "evolve/neat/reproduction.hpp"
+#include "evolve/neat/speciation.hpp"
+#include "evolve/neat/species.hpp"
 
 namespace robozoo {
 
-struct Species {
-  int32_t id = 0;
-  int32_t age = 0;                 ///< generations since creation
-  int32_t last_improvement = 0;    ///< generation its best fitness last improved
-  double best_fitness = 0.0;       ///< best raw fitness ever seen in it
-  Genome representative;           ///< compared against during speciation
-  std::vector<int> members;        ///< indices into the current population
-};
-
-/// Everything needed to continue a run exactly (for checkpoints).
+/// Everything needed to continue a run exactly (for checkpoints), apart from
+/// the Rng (save Rng::state() beside it).
 struct PopulationState {
   int32_t generation = 0;
   int64_t next_genome_id = 0;
   int64_t next_innovation = 0;
   int32_t next_node_id = 0;
   int32_t next_species_id = 0;
-  double compatibility_threshold = 6.0;
+  double compatibility_threshold = 6.0;  ///< threshold the next speciation uses (distance units)
   std::vector<Genome> genomes;
   std::vector<int32_t> species_of;  ///< species id of each genome (after speciation)
   std::vector<Species> species;
+  bool operator==(const PopulationState& o) const {
+    return generation == o.generation && next_genome_id == o.next_genome_id &&
+           next_innovation == o.next_innovation && next_node_id == o.next_node_id &&
+           next_species_id == o.next_species_id &&
+           compatibility_threshold == o.compatibility_threshold && genomes == o.genomes &&
+           species_of == o.species_of && species == o.species;
+  }
+};
+
+/// What advance() did with the generation it was given (for logs and tests).
+struct GenerationReport {
+  int32_t generation = 0;             ///< the generation that was evaluated
+  size_t champion = 0;                ///< index of the generation champion in it
+  double champion_fitness = 0.0;      ///< its raw fitness
+  std::vector<int32_t> species_ids;   ///< species, in order
+  std::vector<double> adjusted;       ///< each species' shared (and dropped-off) fitness
+  std::vector<int> offspring;         ///< offspring allocated to each species (sum = population)
+  std::vector<bool> stagnant;         ///< whether each species was stagnant
 };
 
 class Population {
  public:
-  /// Generation 0: every genome links every input to every output with weights
-  /// uniform in [-initial_weight_range, initial_weight_range] and no hidden node.
+  /// Generation 0: params.population genomes made by initial_genome (ids 0..P-1),
+  /// speciated. Throws std::invalid_argument for bad parameters.
   Population(const NeatParams& params, Regime regime, const GenomeLayout& layout, Rng& rng);
-  /// Continues from a saved state (see state()).
+  /// Continues from a saved state (see state()). Throws std::invalid_argument
+  /// if the state does not fit the parameters and layout.
   Population(const NeatParams& params, Regime regime, const GenomeLayout& layout,
              PopulationState state);
 
-  const std::vector<Genome>& genomes() const;
-  int generation() const;
+  const std::vector<Genome>& genomes() const { return s_.genomes; }
+  int generation() const { return s_.generation; }
   /// Species id of genome i of the current generation.
-  int32_t species_of(size_t i) const;
-  const std::vector<Species>& species() const;
-  double compatibility_threshold() const;
+  int32_t species_of(size_t i) const { return s_.species_of.at(i); }
+  const std::vector<Species>& species() const { return s_.species; }
+  double compatibility_threshold() const { return s_.compatibility_threshold; }
 
-  /// Fitnesses of the current generation, in genome order (non-negative).
-  /// Then speciates, shares fitness and breeds the next generation.
+  /// Fitnesses of the current generation, in genome order (finite, >= 0;
+  /// std::invalid_argument otherwise). Then shares fitness and breeds and
+  /// speciates the next generation.
   void advance(const std::vector<double>& fitness, Rng& rng);
+  /// The report of the last advance() (empty before the first).
+  const GenerationReport& last_report() const { return report_; }
 
-  const PopulationState& state() const;
+  const PopulationState& state() const { return s_; }
+  const NeatParams& params() const { return params_; }
+  Regime regime() const { return regime_; }
+  const GenomeLayout& layout() const { return layout_; }
 
  private:
+  void speciate_current();
+
   NeatParams params_;
   Regime regime_;
   GenomeLayout layout_;
   PopulationState s_;
+  GenerationReport report_;
 };
 
-/// Compatibility distance of NEAT (genes aligned by innovation, N = 1).
-double compatibility_distance(const Genome& a, const Genome& b, const NeatParams& p);
-
-/// Uniform-by-innovation crossover: matching genes from either parent at random,
-/// disjoint and excess genes from the fitter parent (`a` when fitness_a >= fitness_b).
-Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, Rng& rng);
-
-/// Innovation numbers handed out within one generation: the same structural
-/// mutation (same from/to link, or same split link) gets the same number.
-class InnovationTracker {
- public:
-  InnovationTracker(int64_t next_innovation, int32_t next_node_id)
-      : next_innovation_(next_innovation), next_node_id_(next_node_id) {}
-  /// Innovation number for a new link from -> to.
-  int64_t link(int32_t from, int32_t to);
-  /// Node id and the two link innovations for splitting the link with the given innovation.
-  struct Split { int32_t node; int64_t in_link; int64_t out_link; };
-  Split split(int64_t link_innovation);
-  /// Forget this generation's mutations (numbers keep increasing).
-  void new_generation();
-  int64_t next_innovation() const { return next_innovation_; }
-  int32_t next_node_id() const { return next_node_id_; }
-
- private:
-  int64_t next_innovation_;
-  int32_t next_node_id_;
-  std::vector<std::pair<std::pair<int32_t, int32_t>, int64_t>> links_;
-  std::vector<std::pair<int64_t, Split>> splits_;
-};
-
-/// Mutations (each returns true if it changed the genome).
-bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
-                     InnovationTracker& innov, int32_t generation, Rng& rng);
-bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
-                     int32_t generation, Rng& rng);
-void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng);
+/// Throws std::invalid_argument naming the first parameter out of range.
+void validate_neat_params(const NeatParams& p);
 
 }  // namespace robozoo

@@ -1,0 +1,152 @@
+#include "evolve/neat/mutation.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace robozoo {
+namespace {
+
+// Index of node `id` in g.nodes (sorted by id), or -1.
+int node_index(const Genome& g, int32_t id) {
+  const auto it = std::lower_bound(g.nodes.begin(), g.nodes.end(), id,
+                                   [](const NodeGene& n, int32_t v) { return n.id < v; });
+  return it != g.nodes.end() && it->id == id ? static_cast<int>(it - g.nodes.begin()) : -1;
+}
+
+bool has_link(const Genome& g, int32_t from, int32_t to) {
+  for (const auto& l : g.links)
+    if (l.from == from && l.to == to) return true;
+  return false;
+}
+
+bool has_innovation(const Genome& g, int64_t innovation) {
+  const auto it = std::lower_bound(g.links.begin(), g.links.end(), innovation,
+                                   [](const LinkGene& x, int64_t v) { return x.innovation < v; });
+  return it != g.links.end() && it->innovation == innovation;
+}
+
+// True if `dst` can be reached from `src` along link genes, enabled or not.
+bool reaches(const Genome& g, int32_t src, int32_t dst) {
+  const size_t n = g.nodes.size();
+  std::vector<std::vector<int>> out(n);
+  for (const auto& l : g.links) {
+    const int a = node_index(g, l.from), b = node_index(g, l.to);
+    if (a < 0 || b < 0) throw std::logic_error("genome " + std::to_string(g.id) + ": link to a missing node");
+    out[static_cast<size_t>(a)].push_back(b);
+  }
+  const int s = node_index(g, src), d = node_index(g, dst);
+  if (s < 0 || d < 0) throw std::logic_error("genome " + std::to_string(g.id) + ": no node " + std::to_string(s < 0 ? src : dst));
+  std::vector<char> seen(n, 0);
+  std::vector<int> stack{s};
+  seen[static_cast<size_t>(s)] = 1;
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    if (v == d) return true;
+    for (int w : out[static_cast<size_t>(v)])
+      if (!seen[static_cast<size_t>(w)]) {
+        seen[static_cast<size_t>(w)] = 1;
+        stack.push_back(w);
+      }
+  }
+  return false;
+}
+
+void insert_link(Genome& g, const LinkGene& l) {
+  const auto it = std::lower_bound(g.links.begin(), g.links.end(), l.innovation,
+                                   [](const LinkGene& x, int64_t v) { return x.innovation < v; });
+  g.links.insert(it, l);
+}
+
+void insert_node(Genome& g, const NodeGene& n) {
+  const auto it = std::lower_bound(g.nodes.begin(), g.nodes.end(), n.id,
+                                   [](const NodeGene& x, int32_t v) { return x.id < v; });
+  g.nodes.insert(it, n);
+}
+
+std::vector<Activation> allowed_activations(uint32_t mask) {
+  std::vector<Activation> v;
+  for (int c = 0; c < kNumActivations; ++c)
+    if (mask & (1u << c)) v.push_back(static_cast<Activation>(c));
+  if (v.empty())
+    throw std::invalid_argument("neat.hidden_activations: the mask " + std::to_string(mask) +
+                                " names no activation function (bits 0.." +
+                                std::to_string(kNumActivations - 1) + ")");
+  return v;
+}
+
+}  // namespace
+
+bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
+                     InnovationTracker& innov, int32_t generation, Rng& rng) {
+  // Candidate targets: every node that is not an input.
+  std::vector<int32_t> targets;
+  for (const auto& n : g.nodes)
+    if (n.id >= layout.num_inputs && n.kind != NodeKind::Input && n.kind != NodeKind::Bias)
+      targets.push_back(n.id);
+  if (targets.empty() || g.nodes.empty()) return false;
+  for (int t = 0; t < p.add_link_tries; ++t) {
+    const int32_t from = g.nodes[rng.index(g.nodes.size())].id;
+    const int32_t to = targets[rng.index(targets.size())];
+    if (has_link(g, from, to)) continue;
+    if (regime == Regime::FeedForward && (from == to || reaches(g, to, from))) continue;
+    LinkGene l;
+    l.innovation = innov.link(from, to);
+    l.from = from;
+    l.to = to;
+    l.weight = rng.uniform(-p.initial_weight_range, p.initial_weight_range);
+    l.enabled = true;
+    l.born = generation;
+    if (has_innovation(g, l.innovation))
+      throw std::logic_error("mutate_add_link: innovation " + std::to_string(l.innovation) +
+                             " already in genome " + std::to_string(g.id));
+    insert_link(g, l);
+    return true;
+  }
+  return false;
+}
+
+bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
+                     int32_t generation, Rng& rng) {
+  const std::vector<Activation> acts = allowed_activations(p.hidden_activations);
+  std::vector<size_t> enabled;
+  for (size_t i = 0; i < g.links.size(); ++i)
+    if (g.links[i].enabled) enabled.push_back(i);
+  if (enabled.empty()) return false;
+  const size_t k = enabled[rng.index(enabled.size())];
+  const Activation drawn = acts[rng.index(acts.size())];
+  const LinkGene old = g.links[k];
+  const InnovationTracker::Split s = innov.split(old.innovation, old.from, old.to, drawn);
+  // The same split twice in one genome (possible only if a re-enabled link is
+  // split again within the generation that split it): leave the genome alone.
+  if (node_index(g, s.node) >= 0 || has_innovation(g, s.in_link) || has_innovation(g, s.out_link))
+    return false;
+  g.links[k].enabled = false;
+  insert_node(g, {s.node, NodeKind::Hidden, s.activation});
+  insert_link(g, {s.in_link, old.from, s.node, 1.0, true, generation});
+  insert_link(g, {s.out_link, s.node, old.to, old.weight, true, generation});
+  return true;
+}
+
+void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng) {
+  for (auto& l : g.links) {
+    const bool young = generation - l.born < p.young_link_age;
+    if (young || rng.bernoulli(p.old_link_perturb_probability)) {
+      l.weight += rng.uniform(-p.weight_perturbation, p.weight_perturbation);
+      l.weight = std::clamp(l.weight, -p.weight_limit, p.weight_limit);
+    }
+  }
+}
+
+void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
+            InnovationTracker& innov, int32_t generation, Rng& rng) {
+  if (rng.bernoulli(p.add_node_probability) && mutate_add_node(g, p, innov, generation, rng)) return;
+  if (rng.bernoulli(p.add_link_probability) &&
+      mutate_add_link(g, regime, layout, p, innov, generation, rng))
+    return;
+  if (rng.bernoulli(p.mutate_weights_probability)) mutate_weights(g, p, generation, rng);
+}
+
+}  // namespace robozoo

@@ -1,0 +1,187 @@
+#include "evolve/neat/population_json.hpp"
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace robozoo {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw std::invalid_argument(path + ": " + what);
+}
+
+const json& field(const json& j, const char* key, const std::string& path) {
+  if (!j.is_object()) fail(path, std::string("expected an object, got ") + j.type_name());
+  const auto it = j.find(key);
+  if (it == j.end()) fail(path + "." + key, "missing");
+  return *it;
+}
+
+int64_t as_int(const json& v, const std::string& path, int64_t lo, int64_t hi) {
+  if (!v.is_number_integer()) fail(path, std::string("expected an integer, got ") + v.type_name());
+  if (v.is_number_unsigned() && v.get<uint64_t>() > static_cast<uint64_t>(hi))
+    fail(path, "out of range");
+  const int64_t x = v.get<int64_t>();
+  if (x < lo || x > hi) fail(path, "out of range: " + std::to_string(x));
+  return x;
+}
+int64_t as_i64(const json& v, const std::string& path) {
+  return as_int(v, path, std::numeric_limits<int64_t>::min(), std::numeric_limits<int64_t>::max());
+}
+int32_t as_i32(const json& v, const std::string& path) {
+  return static_cast<int32_t>(as_int(v, path, std::numeric_limits<int32_t>::min(),
+                                     std::numeric_limits<int32_t>::max()));
+}
+double as_double(const json& v, const std::string& path) {
+  if (!v.is_number()) fail(path, std::string("expected a number, got ") + v.type_name());
+  return v.get<double>();
+}
+bool as_bool(const json& v, const std::string& path) {
+  if (!v.is_boolean()) fail(path, std::string("expected true or false, got ") + v.type_name());
+  return v.get<bool>();
+}
+std::string as_string(const json& v, const std::string& path) {
+  if (!v.is_string()) fail(path, std::string("expected a string, got ") + v.type_name());
+  return v.get<std::string>();
+}
+const json& as_array(const json& v, const std::string& path) {
+  if (!v.is_array()) fail(path, std::string("expected an array, got ") + v.type_name());
+  return v;
+}
+std::string at(const std::string& path, size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+}  // namespace
+
+std::string node_kind_name(NodeKind k) {
+  switch (k) {
+    case NodeKind::Input: return "input";
+    case NodeKind::Bias: return "bias";
+    case NodeKind::Output: return "output";
+    case NodeKind::Hidden: return "hidden";
+  }
+  return "unknown";
+}
+
+NodeKind node_kind_from_name(const std::string& name) {
+  for (NodeKind k : {NodeKind::Input, NodeKind::Bias, NodeKind::Output, NodeKind::Hidden})
+    if (node_kind_name(k) == name) return k;
+  throw std::invalid_argument("unknown node kind '" + name + "' (input, bias, output, hidden)");
+}
+
+json genome_to_json(const Genome& g) {
+  json nodes = json::array();
+  for (const auto& n : g.nodes)
+    nodes.push_back({{"id", n.id}, {"kind", node_kind_name(n.kind)},
+                     {"activation", activation_name(n.activation)}});
+  json links = json::array();
+  for (const auto& l : g.links)
+    links.push_back({{"innovation", l.innovation}, {"from", l.from}, {"to", l.to},
+                     {"weight", l.weight}, {"enabled", l.enabled}, {"born", l.born}});
+  return {{"id", g.id}, {"nodes", std::move(nodes)}, {"links", std::move(links)}};
+}
+
+Genome genome_from_json(const json& j, const std::string& path) {
+  Genome g;
+  g.id = as_i64(field(j, "id", path), path + ".id");
+  const std::string np = path + ".nodes";
+  const json& nodes = as_array(field(j, "nodes", path), np);
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const std::string p = at(np, i);
+    NodeGene n;
+    n.id = as_i32(field(nodes[i], "id", p), p + ".id");
+    try {
+      n.kind = node_kind_from_name(as_string(field(nodes[i], "kind", p), p + ".kind"));
+      n.activation = activation_from_name(as_string(field(nodes[i], "activation", p), p + ".activation"));
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      if (what.rfind(p, 0) == 0) throw;  // already names its path
+      fail(p, what);
+    }
+    g.nodes.push_back(n);
+  }
+  const std::string lp = path + ".links";
+  const json& links = as_array(field(j, "links", path), lp);
+  for (size_t i = 0; i < links.size(); ++i) {
+    const std::string p = at(lp, i);
+    LinkGene l;
+    l.innovation = as_i64(field(links[i], "innovation", p), p + ".innovation");
+    l.from = as_i32(field(links[i], "from", p), p + ".from");
+    l.to = as_i32(field(links[i], "to", p), p + ".to");
+    l.weight = as_double(field(links[i], "weight", p), p + ".weight");
+    l.enabled = as_bool(field(links[i], "enabled", p), p + ".enabled");
+    l.born = as_i32(field(links[i], "born", p), p + ".born");
+    g.links.push_back(l);
+  }
+  return g;
+}
+
+json species_to_json(const Species& s) {
+  return {{"id", s.id},
+          {"age", s.age},
+          {"last_improvement", s.last_improvement},
+          {"best_fitness", s.best_fitness},
+          {"representative", genome_to_json(s.representative)},
+          {"members", s.members}};
+}
+
+Species species_from_json(const json& j, const std::string& path) {
+  Species s;
+  s.id = as_i32(field(j, "id", path), path + ".id");
+  s.age = as_i32(field(j, "age", path), path + ".age");
+  s.last_improvement = as_i32(field(j, "last_improvement", path), path + ".last_improvement");
+  s.best_fitness = as_double(field(j, "best_fitness", path), path + ".best_fitness");
+  s.representative = genome_from_json(field(j, "representative", path), path + ".representative");
+  const std::string mp = path + ".members";
+  const json& members = as_array(field(j, "members", path), mp);
+  for (size_t i = 0; i < members.size(); ++i) s.members.push_back(as_i32(members[i], at(mp, i)));
+  return s;
+}
+
+json population_state_to_json(const PopulationState& s) {
+  json genomes = json::array();
+  for (const auto& g : s.genomes) genomes.push_back(genome_to_json(g));
+  json species = json::array();
+  for (const auto& sp : s.species) species.push_back(species_to_json(sp));
+  return {{"generation", s.generation},
+          {"next_genome_id", s.next_genome_id},
+          {"next_innovation", s.next_innovation},
+          {"next_node_id", s.next_node_id},
+          {"next_species_id", s.next_species_id},
+          {"compatibility_threshold", s.compatibility_threshold},
+          {"genomes", std::move(genomes)},
+          {"species_of", s.species_of},
+          {"species", std::move(species)}};
+}
+
+PopulationState population_state_from_json(const json& j, const std::string& path) {
+  PopulationState s;
+  s.generation = as_i32(field(j, "generation", path), path + ".generation");
+  s.next_genome_id = as_i64(field(j, "next_genome_id", path), path + ".next_genome_id");
+  s.next_innovation = as_i64(field(j, "next_innovation", path), path + ".next_innovation");
+  s.next_node_id = as_i32(field(j, "next_node_id", path), path + ".next_node_id");
+  s.next_species_id = as_i32(field(j, "next_species_id", path), path + ".next_species_id");
+  s.compatibility_threshold =
+      as_double(field(j, "compatibility_threshold", path), path + ".compatibility_threshold");
+  const std::string gp = path + ".genomes";
+  const json& genomes = as_array(field(j, "genomes", path), gp);
+  for (size_t i = 0; i < genomes.size(); ++i) s.genomes.push_back(genome_from_json(genomes[i], at(gp, i)));
+  const std::string op = path + ".species_of";
+  const json& species_of = as_array(field(j, "species_of", path), op);
+  for (size_t i = 0; i < species_of.size(); ++i) s.species_of.push_back(as_i32(species_of[i], at(op, i)));
+  const std::string sp = path + ".species";
+  const json& species = as_array(field(j, "species", path), sp);
+  for (size_t i = 0; i < species.size(); ++i) s.species.push_back(species_from_json(species[i], at(sp, i)));
+  return s;
+}
+
+void to_json(json& j, const Genome& g) { j = genome_to_json(g); }
+void from_json(const json& j, Genome& g) { g = genome_from_json(j); }
+void to_json(json& j, const Species& s) { j = species_to_json(s); }
+void from_json(const json& j, Species& s) { s = species_from_json(j); }
+void to_json(json& j, const PopulationState& s) { j = population_state_to_json(s); }
+void from_json(const json& j, PopulationState& s) { s = population_state_from_json(j); }
+
+}  // namespace robozoo

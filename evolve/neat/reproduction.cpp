@@ -1,0 +1,85 @@
+#include "evolve/neat/reproduction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace robozoo {
+
+bool is_stagnant(const Species& s, int32_t generation, const NeatParams& p) {
+  return generation - s.last_improvement >= p.dropoff_age;
+}
+
+double species_adjusted_fitness(const Species& s, const std::vector<double>& fitness,
+                                int32_t generation, const NeatParams& p) {
+  if (s.members.empty()) return 0.0;
+  const double size = static_cast<double>(s.members.size());
+  double shared = 0.0;
+  for (int m : s.members) shared += fitness.at(static_cast<size_t>(m)) / size;
+  return is_stagnant(s, generation, p) ? shared * p.dropoff_factor : shared;
+}
+
+std::vector<int> allocate_offspring(const std::vector<double>& shares, int total,
+                                    const std::vector<double>& fallback) {
+  if (total < 0) throw std::invalid_argument("allocate_offspring: negative total " + std::to_string(total));
+  if (shares.size() != fallback.size())
+    throw std::invalid_argument("allocate_offspring: " + std::to_string(shares.size()) +
+                                " shares but " + std::to_string(fallback.size()) + " fallback weights");
+  auto sum_of = [](const std::vector<double>& v, const char* what) {
+    double s = 0.0;
+    for (double x : v) {
+      if (!std::isfinite(x) || x < 0.0)
+        throw std::invalid_argument(std::string("allocate_offspring: ") + what +
+                                    " must be finite and >= 0, got " + std::to_string(x));
+      s += x;
+    }
+    return s;
+  };
+  const double sum_shares = sum_of(shares, "shares");
+  const double sum_fallback = sum_of(fallback, "fallback weights");
+  std::vector<int> counts(shares.size(), 0);
+  if (total == 0) return counts;
+  const std::vector<double>& w = sum_shares > 0.0 ? shares : fallback;
+  const double sum = sum_shares > 0.0 ? sum_shares : sum_fallback;
+  if (!(sum > 0.0)) throw std::invalid_argument("allocate_offspring: no species has a positive weight");
+
+  std::vector<double> frac(w.size());
+  int given = 0;
+  for (size_t i = 0; i < w.size(); ++i) {
+    const double quota = w[i] / sum * total;
+    const double fl = std::min(std::floor(quota), static_cast<double>(total));
+    counts[i] = static_cast<int>(fl);
+    frac[i] = quota - fl;
+    given += counts[i];
+  }
+  // Rounding can only leave offspring over, never take more than total; guard anyway.
+  while (given > total) {
+    const size_t i = static_cast<size_t>(std::max_element(counts.begin(), counts.end()) - counts.begin());
+    --counts[i];
+    --given;
+  }
+  std::vector<size_t> order(w.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return frac[a] > frac[b]; });
+  // Species with no weight at all get nothing from the remainder.
+  size_t k = 0;
+  while (given < total) {
+    const size_t i = order[k % order.size()];
+    if (w[i] > 0.0) {
+      ++counts[i];
+      ++given;
+    }
+    ++k;
+  }
+  return counts;
+}
+
+int num_parents(int species_size, const NeatParams& p) {
+  if (species_size <= 0) return 0;
+  const int n = static_cast<int>(std::floor(p.survival_threshold * species_size)) + 1;
+  return std::clamp(n, 1, species_size);
+}
+
+}  // namespace robozoo

@@ -1,0 +1,32 @@
+#pragma once
+// Fitness sharing and offspring allocation.
+#include <cstdint>
+#include <vector>
+
+#include "evolve/neat/params.hpp"
+#include "evolve/neat/species.hpp"
+
+namespace robozoo {
+
+/// True when a species has gone p.dropoff_age or more generations without improving.
+bool is_stagnant(const Species& s, int32_t generation, const NeatParams& p);
+
+/// Explicit fitness sharing: the sum over a species' members of fitness / size
+/// (its mean raw fitness), times p.dropoff_factor when the species is stagnant.
+double species_adjusted_fitness(const Species& s, const std::vector<double>& fitness,
+                                int32_t generation, const NeatParams& p);
+
+/// Splits `total` offspring among species in proportion to `shares`
+/// (largest-remainder method: floors first, the rest one each in decreasing
+/// order of the fractional parts, ties to the lower index). If every share is
+/// zero, `fallback` (e.g. species sizes) is used instead. The counts always sum
+/// to `total`. Throws std::invalid_argument for negative or non-finite shares,
+/// mismatched sizes, or no positive weight at all.
+std::vector<int> allocate_offspring(const std::vector<double>& shares, int total,
+                                    const std::vector<double>& fallback);
+
+/// How many of a species' best members may reproduce:
+/// floor(survival_threshold * size) + 1, at most size.
+int num_parents(int species_size, const NeatParams& p);
+
+}  // namespace robozoo

@@ -1,0 +1,38 @@
+#include "evolve/neat/xor_task.hpp"
+
+#include <cmath>
+
+#include "evolve/cppn/network.hpp"
+
+namespace robozoo {
+
+GenomeLayout xor_layout() {
+  GenomeLayout l;
+  l.num_inputs = 3;
+  l.bias_input = 2;
+  l.num_outputs = 1;
+  l.output_activation = Activation::SignedSigmoid;
+  return l;
+}
+
+XorResult evaluate_xor(const Genome& g) {
+  Network net(g, xor_layout());
+  static constexpr double kIn[4][2] = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
+  static constexpr double kTarget[4] = {0, 1, 1, 0};
+  XorResult r;
+  double error = 0.0;
+  r.solved = true;
+  for (int k = 0; k < 4; ++k) {
+    const double in[3] = {kIn[k][0], kIn[k][1], 1.0};
+    double out = 0.0;
+    net.query(in, &out);
+    const double y = (out + 1.0) / 2.0;
+    r.outputs[k] = y;
+    error += std::fabs(kTarget[k] - y);
+    r.solved = r.solved && (kTarget[k] > 0.5 ? y > 0.5 : y < 0.5);
+  }
+  r.fitness = (4.0 - error) * (4.0 - error);
+  return r;
+}
+
+}  // namespace robozoo

@@ -1,0 +1,30 @@
+#pragma once
+// XOR, the NEAT paper's benchmark, as a check of the NEAT core.
+//
+// Layout: 3 inputs (x1, x2 in {0, 1}; bias 1.0 at input index 2, kind Bias),
+// 1 output (signed sigmoid, mapped to (out + 1) / 2 in (0, 1), i.e. the
+// logistic function of the output's net input). Fitness (4 - sum |error|)^2 as
+// in the NEAT paper (0..16). Solved when every pattern's mapped output is on
+// the right side of 0.5 (> 0.5 for 1, < 0.5 for 0). The CPPN is queried as
+// every CPPN of the project is (Network, 10 synchronous updates, values reset
+// before each pattern).
+#include <array>
+
+#include "evolve/cppn/genome.hpp"
+
+namespace robozoo {
+
+struct XorResult {
+  double fitness = 0.0;             ///< (4 - sum |error|)^2 (fitness units, 0..16)
+  bool solved = false;              ///< every pattern on the right side of 0.5
+  std::array<double, 4> outputs{};  ///< mapped outputs for (0,0), (0,1), (1,0), (1,1)
+};
+
+/// The XOR layout: inputs x1, x2, bias (index 2); one signed-sigmoid output.
+GenomeLayout xor_layout();
+
+/// Evaluates g on the four patterns. Throws std::invalid_argument if g does
+/// not fit xor_layout().
+XorResult evaluate_xor(const Genome& g);
+
+}  // namespace robozoo

@@ -1,0 +1,300 @@
+#include "evolve/neat/mutation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "evolve/neat/initial_genome.hpp"
+
+namespace robozoo {
+namespace {
+
+GenomeLayout small_layout() {
+  GenomeLayout l;
+  l.num_inputs = 3;
+  l.bias_input = 2;
+  l.num_outputs = 2;
+  return l;
+}
+
+// The genome with every link gene enabled: acyclic iff the graph of all genes is.
+Genome all_enabled(Genome g) {
+  for (auto& l : g.links) l.enabled = true;
+  return g;
+}
+
+bool has_self_loop(const Genome& g) {
+  for (const auto& l : g.links)
+    if (l.from == l.to) return true;
+  return false;
+}
+
+// Grows a genome by many random structural mutations, new tracker generation each round.
+void grow(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
+          InnovationTracker& t, int rounds, Rng& rng, int* added_links = nullptr) {
+  for (int r = 0; r < rounds; ++r) {
+    t.new_generation();
+    if (rng.bernoulli(0.2)) mutate_add_node(g, p, t, r, rng);
+    const bool added = mutate_add_link(g, regime, layout, p, t, r, rng);
+    if (added_links) *added_links += added;
+    validate_genome(g, layout);
+  }
+}
+
+TEST(MutateAddLink, FeedForwardNeverClosesACycle) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(1);
+  int total_added = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Genome g = initial_genome(layout, trial, p, rng);
+    InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+    int added = 0;
+    for (int r = 0; r < 100; ++r) {
+      t.new_generation();
+      if (rng.bernoulli(0.2)) mutate_add_node(g, p, t, r, rng);
+      added += mutate_add_link(g, Regime::FeedForward, layout, p, t, r, rng);
+      ASSERT_FALSE(has_cycle(g)) << "trial " << trial << " round " << r;
+      ASSERT_FALSE(has_cycle(all_enabled(g))) << "a disabled gene could close a cycle later";
+      for (const auto& l : g.links) ASSERT_GE(l.to, layout.num_inputs) << "link into an input";
+    }
+    validate_genome(g, layout);
+    total_added += added;
+  }
+  EXPECT_GT(total_added, 1000) << "add-link should usually find a legal link";
+}
+
+TEST(MutateAddLink, RecurrentRegimeMakesCyclesAndSelfLoops) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(2);
+  int cyclic = 0, self_loops = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    Genome g = initial_genome(layout, trial, p, rng);
+    InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+    grow(g, Regime::Recurrent, layout, p, t, 30, rng);
+    for (const auto& l : g.links) ASSERT_GE(l.to, layout.num_inputs) << "link into an input";
+    cyclic += has_cycle(g);
+    self_loops += has_self_loop(g);
+  }
+  EXPECT_GT(cyclic, 15);
+  EXPECT_GT(self_loops, 5);
+}
+
+TEST(MutateAddLink, NewLinkIsNewBornAndRegistered) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(3);
+  Genome g = initial_genome(layout, 0, p, rng);
+  InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+  // Fully connected, no hidden node: in the recurrent regime only output -> output links are new.
+  ASSERT_TRUE(mutate_add_link(g, Regime::Recurrent, layout, p, t, 7, rng));
+  ASSERT_EQ(g.links.size(), 7u);
+  const LinkGene& l = g.links.back();
+  EXPECT_EQ(l.innovation, first_free_innovation(layout));
+  EXPECT_EQ(l.born, 7);
+  EXPECT_TRUE(l.enabled);
+  EXPECT_GE(l.from, layout.num_inputs);
+  EXPECT_LE(std::abs(l.weight), p.initial_weight_range);
+  // A second genome making the same link this generation gets the same innovation.
+  Genome h = initial_genome(layout, 1, p, rng);
+  for (int k = 0; k < 100 && h.links.size() == 6; ++k) {
+    Genome tmp = h;
+    if (mutate_add_link(tmp, Regime::Recurrent, layout, p, t, 7, rng) &&
+        tmp.links.back().from == l.from && tmp.links.back().to == l.to)
+      h = tmp;
+  }
+  ASSERT_EQ(h.links.size(), 7u);
+  EXPECT_EQ(h.links.back().innovation, l.innovation);
+}
+
+TEST(MutateAddLink, FailsWhenNoLegalLinkExists) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(4);
+  Genome g = initial_genome(layout, 0, p, rng);
+  InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+  // Feed-forward, fully connected inputs -> outputs: only output -> output links
+  // remain, 3 -> 4 or 4 -> 3; add one, and the other would close a cycle.
+  int added = 0;
+  for (int k = 0; k < 50; ++k) added += mutate_add_link(g, Regime::FeedForward, layout, p, t, 0, rng);
+  EXPECT_EQ(added, 1);
+  EXPECT_FALSE(has_cycle(g));
+}
+
+TEST(MutateAddNode, SplitsAnEnabledLink) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  p.hidden_activations = 1u << static_cast<int>(Activation::Gaussian);
+  Rng rng(5);
+  Genome g = initial_genome(layout, 0, p, rng);
+  const Genome before = g;
+  InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+  ASSERT_TRUE(mutate_add_node(g, p, t, 4, rng));
+  validate_genome(g, layout);
+  ASSERT_EQ(count_hidden(g), 1);
+  const NodeGene& h = g.nodes.back();
+  EXPECT_EQ(h.id, layout.first_hidden());
+  EXPECT_EQ(h.activation, Activation::Gaussian);
+  ASSERT_EQ(g.links.size(), before.links.size() + 2);
+  // Exactly one old link was disabled; in-link weight 1, out-link the old weight.
+  const LinkGene* split = nullptr;
+  for (size_t i = 0; i < before.links.size(); ++i)
+    if (!g.links[i].enabled) {
+      ASSERT_EQ(split, nullptr);
+      split = &g.links[i];
+      EXPECT_EQ(g.links[i].weight, before.links[i].weight);
+    }
+  ASSERT_NE(split, nullptr);
+  const LinkGene& in = g.links[before.links.size()];
+  const LinkGene& out = g.links[before.links.size() + 1];
+  EXPECT_EQ(in.from, split->from);
+  EXPECT_EQ(in.to, h.id);
+  EXPECT_EQ(in.weight, 1.0);
+  EXPECT_EQ(out.from, h.id);
+  EXPECT_EQ(out.to, split->to);
+  EXPECT_EQ(out.weight, split->weight);
+  EXPECT_EQ(in.born, 4);
+  EXPECT_EQ(out.born, 4);
+  EXPECT_TRUE(in.enabled && out.enabled);
+}
+
+TEST(MutateAddNode, SameSplitInOneGenerationSharesNodeAndInnovations) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(6);
+  InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+  // Many genomes split their links in one generation: the same split link must
+  // always give the same node gene and link innovations.
+  std::map<int64_t, std::tuple<int32_t, int64_t, int64_t, Activation>> seen;
+  int repeats = 0;
+  for (int i = 0; i < 60; ++i) {
+    Genome g = initial_genome(layout, i, p, rng);
+    ASSERT_TRUE(mutate_add_node(g, p, t, 1, rng));
+    int64_t split = -1;
+    for (const auto& l : g.links)
+      if (!l.enabled) split = l.innovation;
+    const NodeGene& h = g.nodes.back();
+    const auto key = std::make_tuple(h.id, g.links[6].innovation, g.links[7].innovation, h.activation);
+    const auto it = seen.find(split);
+    if (it == seen.end()) {
+      seen.emplace(split, key);
+    } else {
+      ++repeats;
+      EXPECT_EQ(it->second, key);
+    }
+  }
+  EXPECT_GT(repeats, 30);
+  EXPECT_EQ(seen.size(), 6u);
+  // A new generation: the same split gets a new node id.
+  t.new_generation();
+  Genome g = initial_genome(layout, 99, p, rng);
+  ASSERT_TRUE(mutate_add_node(g, p, t, 2, rng));
+  EXPECT_EQ(g.nodes.back().id, layout.first_hidden() + 6);
+}
+
+TEST(MutateAddNode, ActivationsComeFromTheMask) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;  // signed sigmoid, signed cosine, Gaussian
+  Rng rng(7);
+  std::set<Activation> got;
+  for (int i = 0; i < 200; ++i) {
+    InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+    Genome g = initial_genome(layout, i, p, rng);
+    ASSERT_TRUE(mutate_add_node(g, p, t, 1, rng));
+    got.insert(g.nodes.back().activation);
+  }
+  EXPECT_EQ(got, (std::set<Activation>{Activation::SignedSigmoid, Activation::SignedCosine,
+                                       Activation::Gaussian}));
+  p.hidden_activations = 0;
+  InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+  Genome g = initial_genome(layout, 0, p, rng);
+  EXPECT_THROW(mutate_add_node(g, p, t, 1, rng), std::invalid_argument);
+}
+
+TEST(MutateAddNode, FailsWithoutEnabledLinks) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(8);
+  Genome g = initial_genome(layout, 0, p, rng);
+  for (auto& l : g.links) l.enabled = false;
+  InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+  EXPECT_FALSE(mutate_add_node(g, p, t, 1, rng));
+  EXPECT_EQ(count_hidden(g), 0);
+}
+
+TEST(MutateWeights, YoungLinksAlwaysOldOnesSometimes) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(9);
+  // Young: generation - born < 18, always perturbed.
+  int young_changed = 0, young_total = 0, old_changed = 0, old_total = 0;
+  for (int i = 0; i < 500; ++i) {
+    Genome g = initial_genome(layout, i, p, rng);
+    const Genome before = g;
+    mutate_weights(g, p, /*generation=*/17, rng);
+    for (size_t k = 0; k < g.links.size(); ++k) {
+      ++young_total;
+      young_changed += g.links[k].weight != before.links[k].weight;
+      ASSERT_LE(std::abs(g.links[k].weight - before.links[k].weight), p.weight_perturbation);
+    }
+    Genome o = before;
+    mutate_weights(o, p, /*generation=*/18, rng);
+    for (size_t k = 0; k < o.links.size(); ++k) {
+      ++old_total;
+      old_changed += o.links[k].weight != before.links[k].weight;
+    }
+  }
+  EXPECT_EQ(young_changed, young_total);
+  // Binomial(3000, 0.1): mean 300, sd ~16.
+  EXPECT_GT(old_changed, 230);
+  EXPECT_LT(old_changed, 370);
+}
+
+TEST(MutateWeights, ClampsToTheLimit) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  Rng rng(10);
+  Genome g = initial_genome(layout, 0, p, rng);
+  bool hit = false;
+  for (int r = 0; r < 200; ++r) {
+    mutate_weights(g, p, 0, rng);
+    for (const auto& l : g.links) {
+      ASSERT_LE(std::abs(l.weight), p.weight_limit);
+      hit |= std::abs(l.weight) == p.weight_limit;
+    }
+  }
+  EXPECT_TRUE(hit) << "a random walk of +-2.5 steps reaches the +-5 bounds";
+}
+
+TEST(Mutate, AtMostOneStructuralChangeAndWeightsOnlyWithoutOne) {
+  const GenomeLayout layout = small_layout();
+  NeatParams p;
+  p.add_node_probability = 0.5;
+  p.add_link_probability = 0.5;
+  p.mutate_weights_probability = 1.0;
+  Rng rng(11);
+  int nodes = 0, links = 0, weights = 0;
+  for (int i = 0; i < 300; ++i) {
+    InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+    Genome g = initial_genome(layout, i, p, rng);
+    const Genome before = g;
+    mutate(g, Regime::Recurrent, layout, p, t, 1, rng);
+    const size_t added = g.links.size() - before.links.size();
+    ASSERT_TRUE(added == 0 || added == 1 || added == 2);
+    bool weights_changed = false;
+    for (size_t k = 0; k < before.links.size(); ++k)
+      weights_changed |= g.links[k].weight != before.links[k].weight;
+    if (added == 2) { ++nodes; EXPECT_FALSE(weights_changed); }
+    if (added == 1) { ++links; EXPECT_FALSE(weights_changed); }
+    if (added == 0) { ++weights; EXPECT_TRUE(weights_changed); }
+  }
+  EXPECT_GT(nodes, 100);
+  EXPECT_GT(links, 40);
+  EXPECT_GT(weights, 40);
+}
+
+}  // namespace
+}  // namespace robozoo
