@@ -114,7 +114,7 @@ int run_run_command(const CLI::App& app, const RunOptions& o) {
                 << "\n  log " << opts.log_path << "\n  checkpoint " << evo->checkpoint_path() << "\n"
                 << (opts.lcm_url.empty() ? "" : "  live on " + opts.lcm_url + "\n");
     }
-    evo->run([&](const GenerationReport& r) {
+    evo->run([&](const ProgressReport& r) {
       if (!o.quiet) std::cerr << format_progress(r) << std::endl;
     });
     if (!o.quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";

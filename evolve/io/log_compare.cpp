@@ -7,7 +7,7 @@ namespace robozoo {
 namespace {
 template <class T>
 bool renormalize(const std::vector<uint8_t>& data, std::vector<uint8_t>& out, void (*clear)(T&)) {
-  T m;
+  T m{};
   int used = -1;
   try {
     used = m.decode(data.data(), 0, static_cast<int>(data.size()));

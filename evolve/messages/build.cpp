@@ -7,7 +7,7 @@ namespace robozoo {
 std::string software_version() { return ROBOZOO_VERSION; }
 
 run_t make_run_message(const std::string& run_id, const RunConfig& config, int64_t utime) {
-  run_t m;
+  run_t m{};
   m.utime = utime;
   m.run_id = run_id;
   m.software_version = software_version();
@@ -22,7 +22,7 @@ run_t make_run_message(const std::string& run_id, const RunConfig& config, int64
 }
 
 generation_t make_generation_message(const std::string& run_id, const GenerationSummary& s, int64_t utime) {
-  generation_t m;
+  generation_t m{};
   m.utime = utime;
   m.run_id = run_id;
   m.generation = s.generation;
@@ -47,7 +47,7 @@ generation_t make_generation_message(const std::string& run_id, const Generation
 
 genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g,
                              int32_t species_id, const GenomeScore& score, int64_t utime) {
-  genome_t m;
+  genome_t m{};
   m.utime = utime;
   m.run_id = run_id;
   m.generation = generation;
@@ -60,7 +60,7 @@ genome_t make_genome_message(const std::string& run_id, int32_t generation, cons
   m.num_nodes = static_cast<int32_t>(g.nodes.size());
   m.nodes.reserve(g.nodes.size());
   for (const auto& n : g.nodes) {
-    node_t x;
+    node_t x{};
     x.id = n.id;
     x.kind = static_cast<int8_t>(n.kind);
     x.activation = static_cast<int8_t>(n.activation);
@@ -69,7 +69,7 @@ genome_t make_genome_message(const std::string& run_id, int32_t generation, cons
   m.num_links = static_cast<int32_t>(g.links.size());
   m.links.reserve(g.links.size());
   for (const auto& l : g.links) {
-    link_t x;
+    link_t x{};
     x.innovation = l.innovation;
     x.from_node = l.from;
     x.to_node = l.to;
@@ -82,14 +82,14 @@ genome_t make_genome_message(const std::string& run_id, int32_t generation, cons
 
 morphology_t make_morphology_message(const std::string& run_id, int32_t generation, int64_t genome_id,
                                      const Robot& robot, int64_t utime) {
-  morphology_t m;
+  morphology_t m{};
   m.utime = utime;
   m.run_id = run_id;
   m.generation = generation;
   m.genome_id = genome_id;
   m.num_spheres = static_cast<int32_t>(robot.spheres.size());
   for (const auto& s : robot.spheres) {
-    sphere_t x;
+    sphere_t x{};
     x.index = s.index;
     x.parent = s.parent;
     for (int k = 0; k < 3; ++k) {
@@ -129,7 +129,7 @@ morphology_t make_morphology_message(const std::string& run_id, int32_t generati
 
 pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t genome_id,
                          const SimState& s, int64_t utime) {
-  pose_t m;
+  pose_t m{};
   m.utime = utime;
   m.run_id = run_id;
   m.generation = generation;

@@ -70,7 +70,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   j["rng_state"] = c.rng_state;
   j["evaluations"] = c.evaluations;
   j["best_so_far"] = c.best_so_far;
-  j["last_champion_id"] = c.last_champion_id;
+  j["last_champion_hash"] = c.last_champion_hash;
   j["log_bytes"] = c.log_bytes;
   j["log_events"] = c.log_events;
   j["elapsed_seconds"] = c.elapsed_seconds;
@@ -98,7 +98,7 @@ Checkpoint read_checkpoint(const std::string& path) {
     c.rng_state = j.at("rng_state").get<std::string>();
     c.evaluations = j.at("evaluations").get<int64_t>();
     c.best_so_far = j.at("best_so_far").get<double>();
-    c.last_champion_id = j.at("last_champion_id").get<int64_t>();
+    c.last_champion_hash = j.at("last_champion_hash").get<uint64_t>();
     c.log_bytes = j.at("log_bytes").get<int64_t>();
     c.log_events = j.at("log_events").get<int64_t>();
     c.elapsed_seconds = j.at("elapsed_seconds").get<double>();

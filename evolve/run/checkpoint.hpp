@@ -20,7 +20,7 @@ struct Checkpoint {
   std::string rng_state;            ///< Rng::state() after breeding it
   int64_t evaluations = 0;          ///< cumulative evaluations so far (count)
   double best_so_far = 0.0;         ///< best fitness since generation 0
-  int64_t last_champion_id = -1;    ///< champion of the last finished generation
+  uint64_t last_champion_hash = 0;  ///< content hash (id aside) of the last generation's champion
   int64_t log_bytes = 0;            ///< size of the log after the last finished generation
   int64_t log_events = 0;           ///< events in the log after the last finished generation
   double elapsed_seconds = 0.0;     ///< wall time spent so far (s)

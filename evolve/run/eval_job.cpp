@@ -18,7 +18,7 @@ std::vector<uint8_t> encode_eval_job(const Genome& g) {
 }
 
 Genome decode_eval_job(const std::vector<uint8_t>& bytes, const GenomeLayout& layout) {
-  genome_t m;
+  genome_t m{};
   int used = -1;
   try {
     used = m.decode(bytes.data(), 0, static_cast<int>(bytes.size()));
@@ -46,7 +46,7 @@ EvalSummary summarize(int64_t genome_id, const Evaluation& e) {
 }
 
 std::vector<uint8_t> encode_eval_result(const EvalSummary& s) {
-  eval_result_t m;
+  eval_result_t m{};
   m.genome_id = s.genome_id;
   m.fitness = s.fitness;
   m.r_term = s.r;
@@ -61,7 +61,7 @@ std::vector<uint8_t> encode_eval_result(const EvalSummary& s) {
 }
 
 EvalSummary decode_eval_result(const std::vector<uint8_t>& bytes) {
-  eval_result_t m;
+  eval_result_t m{};
   if (m.decode(bytes.data(), 0, static_cast<int>(bytes.size())) != static_cast<int>(bytes.size()))
     throw std::invalid_argument("evaluation result is not an eval_result_t message");
   if (m.outcome < 0 || m.outcome >= kNumOutcomes)

@@ -41,7 +41,7 @@ std::string default_run_id(const RunConfig& c) {
   return regime_name(c.regime) + "-s" + std::to_string(c.seed);
 }
 
-std::string format_progress(const GenerationReport& r) {
+std::string format_progress(const ProgressReport& r) {
   char buf[256];
   std::snprintf(buf, sizeof buf,
                 "gen %4d/%d  best %8.3f  mean %7.3f  species %2d  simulated %5.1f%%  %6.1f eval/s  "
@@ -75,7 +75,7 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     population_ = std::make_unique<Population>(config_.neat, config_.regime, layout, std::move(c.population));
     evaluations_ = c.evaluations;
     best_so_far_ = c.best_so_far;
-    last_champion_id_ = c.last_champion_id;
+    last_champion_hash_ = c.last_champion_hash;
     elapsed_before_ = c.elapsed_seconds;
     finished_ = c.finished;
     resumed_ = true;
@@ -110,7 +110,7 @@ void Evolution::save_checkpoint() {
   c.rng_state = rng_.state();
   c.evaluations = evaluations_;
   c.best_so_far = best_so_far_;
-  c.last_champion_id = last_champion_id_;
+  c.last_champion_hash = last_champion_hash_;
   c.log_bytes = log_->bytes();
   c.log_events = log_->events();
   c.elapsed_seconds = elapsed_before_ + elapsed_;
@@ -118,7 +118,7 @@ void Evolution::save_checkpoint() {
   write_checkpoint(checkpoint_path_, c);
 }
 
-void Evolution::run(const std::function<void(const GenerationReport&)>& on_generation) {
+void Evolution::run(const std::function<void(const ProgressReport&)>& on_generation) {
   while (step(on_generation)) {
   }
 }
@@ -146,7 +146,7 @@ void Evolution::publish_trajectory(const Genome& champion, int32_t generation, c
                            std::to_string(expected.steps_run));
 }
 
-bool Evolution::step(const std::function<void(const GenerationReport&)>& on_generation) {
+bool Evolution::step(const std::function<void(const ProgressReport&)>& on_generation) {
   if (finished_) return false;
   const auto t0 = std::chrono::steady_clock::now();
   const int32_t gen = population_->generation();
@@ -211,14 +211,19 @@ bool Evolution::step(const std::function<void(const GenerationReport&)>& on_gene
   if (config_.publish_all)
     for (size_t i = 0; i < genomes.size(); ++i)
       if (i != champ) publish_genome(i);
-  if (champion.id != last_champion_id_ && results[champ].outcome != Outcome::NotSimulated)
+  // The champion "changes" when its genes do: NEAT copies a champion unchanged
+  // under a fresh id, and that copy's trajectory is already in the log.
+  Genome anonymous = champion;
+  anonymous.id = 0;
+  const uint64_t champion_hash = genome_hash(anonymous);
+  if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated)
     publish_trajectory(champion, gen, results[champ]);
-  last_champion_id_ = champion.id;
+  last_champion_hash_ = champion_hash;
 
   std::vector<double> fitness(results.size());
   for (size_t i = 0; i < results.size(); ++i) fitness[i] = results[i].fitness;
   const bool last = gen + 1 >= config_.generations;
-  GenerationReport report;
+  ProgressReport report;
   report.summary = s;
   if (last) {
     finished_ = true;

@@ -28,7 +28,7 @@ struct EvolveOptions {
 };
 
 /// What happened in one generation (for progress output and tests).
-struct GenerationReport {
+struct ProgressReport {
   GenerationSummary summary;
   int32_t generations_total = 0;
   double evals_per_second = 0.0;
@@ -38,7 +38,7 @@ struct GenerationReport {
 };
 
 /// One line of progress for a generation.
-std::string format_progress(const GenerationReport& r);
+std::string format_progress(const ProgressReport& r);
 
 /// Default run id of a configuration.
 std::string default_run_id(const RunConfig& c);
@@ -52,9 +52,9 @@ class Evolution {
   ~Evolution();
 
   /// Runs the remaining generations; calls `on_generation` after each.
-  void run(const std::function<void(const GenerationReport&)>& on_generation = {});
+  void run(const std::function<void(const ProgressReport&)>& on_generation = {});
   /// Runs one generation; returns false when the run is already complete.
-  bool step(const std::function<void(const GenerationReport&)>& on_generation = {});
+  bool step(const std::function<void(const ProgressReport&)>& on_generation = {});
 
   bool finished() const { return finished_; }
   int generation() const;
@@ -80,7 +80,7 @@ class Evolution {
   std::unique_ptr<Bus> bus_;
   int64_t evaluations_ = 0;
   double best_so_far_ = 0.0;
-  int64_t last_champion_id_ = -1;
+  uint64_t last_champion_hash_ = 0;  // content hash (id aside) of the last champion
   double elapsed_before_ = 0.0;   // from earlier sessions of a resumed run
   double elapsed_ = 0.0;
   bool finished_ = false;
