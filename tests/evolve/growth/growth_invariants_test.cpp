@@ -372,9 +372,9 @@ TEST(GrowInvariants, HoldForRandomCppnsOfBothRegimes) {
   for (int g = 0; g < kGenomes; ++g) {
     SCOPED_TRACE("genome " + std::to_string(g));
     const bool recurrent = g % 2 == 1;
-    Genome genome = random_cppn(robot_layout(), recurrent,
-                                static_cast<int>(rng.uniform_int(0, 3)),
-                                static_cast<int>(rng.uniform_int(0, 6)), rng);
+    const int hidden = static_cast<int>(rng.uniform_int(0, 3));  // sequenced: argument order is unspecified
+    const int extra = static_cast<int>(rng.uniform_int(0, 6));
+    Genome genome = random_cppn(robot_layout(), recurrent, hidden, extra, rng);
     // Bias the bias -> m link up so that about half grow beyond the root.
     for (auto& l : genome.links)
       if (l.from == kInBias && l.to == robot_layout().num_inputs + kOutMatter) l.weight += 1.5;
