@@ -27,4 +27,10 @@ struct GrowthParams {
   int max_spheres = 50;             ///< growth stops at this many spheres (count)
 };
 
+/// Checks that growth can run with these parameters (positive radii with
+/// r_min <= r_init <= r_max, thresholds below 1, ordered density and time-constant
+/// ranges, at least one cloud point and one sphere, finite values). Throws
+/// std::invalid_argument naming the first offending field.
+void validate_growth_params(const GrowthParams& p);
+
 }  // namespace robozoo

@@ -32,6 +32,7 @@ struct Sphere {
   int cloud_angle_index = -1;       ///< k of the parent's cloud point (angle k * cloud_step); -1 for the root
   uint8_t sensors = 0;              ///< SensorBit mask
   int num_children = 0;             ///< spheres attached to this one
+  bool joint_pruned = false;        ///< grew a joint that pruning made rigid (a leaf; paper 2.3)
 };
 
 struct Joint {

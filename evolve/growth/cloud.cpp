@@ -1,0 +1,16 @@
+#include "evolve/growth/cloud.hpp"
+
+#include <cmath>
+
+namespace robozoo {
+
+Cloud::Cloud(const GrowthParams& p) : step_(p.cloud_step) {
+  cos_.resize(static_cast<size_t>(p.cloud_points));
+  sin_.resize(static_cast<size_t>(p.cloud_points));
+  for (int k = 0; k < p.cloud_points; ++k) {
+    cos_[k] = std::cos(angle(k));
+    sin_[k] = std::sin(angle(k));
+  }
+}
+
+}  // namespace robozoo

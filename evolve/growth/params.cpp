@@ -1,0 +1,34 @@
+#include "evolve/growth/params.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace robozoo {
+
+void validate_growth_params(const GrowthParams& p) {
+  auto fail = [](const std::string& what) {
+    throw std::invalid_argument("growth parameters: " + what);
+  };
+  const double reals[] = {p.r_init, p.r_min, p.r_max, p.t_matter, p.t_joint, p.t_sensor,
+                          p.weight_threshold, p.rho_min, p.rho_max, p.max_joint_range,
+                          p.tau_min, p.tau_max, p.bias_max, p.weight_max, p.bias_input,
+                          p.cloud_step, p.bound};
+  for (double v : reals)
+    if (!std::isfinite(v)) fail("every value must be finite");
+  if (!(p.r_min > 0)) fail("r_min must be positive");
+  if (!(p.r_min <= p.r_max)) fail("r_min must not exceed r_max");
+  if (!(p.r_min <= p.r_init && p.r_init <= p.r_max)) fail("r_init must lie in [r_min, r_max]");
+  // (m - T) / (1 - T) and (j - T) / (1 - T) divide by 1 - T.
+  if (!(p.t_matter < 1)) fail("t_matter must be below 1");
+  if (!(p.t_joint < 1)) fail("t_joint must be below 1");
+  if (!(p.weight_threshold >= 0)) fail("weight_threshold must not be negative");
+  if (!(p.rho_min > 0 && p.rho_min <= p.rho_max)) fail("need 0 < rho_min <= rho_max");
+  if (!(p.max_joint_range >= 0)) fail("max_joint_range must not be negative");
+  if (!(p.tau_min > 0 && p.tau_min <= p.tau_max)) fail("need 0 < tau_min <= tau_max");
+  if (p.cloud_points < 1) fail("cloud_points must be at least 1");
+  if (!(p.cloud_step > 0)) fail("cloud_step must be positive");
+  if (!(p.bound >= 0)) fail("bound must not be negative");
+  if (p.max_spheres < 1) fail("max_spheres must be at least 1");
+}
+
+}  // namespace robozoo

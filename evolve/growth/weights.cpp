@@ -1,0 +1,45 @@
+#include "evolve/growth/weights.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "evolve/growth/growth.hpp"
+
+namespace robozoo {
+
+double expressed_weight(double output_w, const GrowthParams& params) {
+  return std::abs(output_w) > params.weight_threshold ? output_w * params.weight_max : 0.0;
+}
+
+void set_ctrnn_weights(Robot& robot, CppnProbe& probe, const GrowthParams& params) {
+  const auto ns = static_cast<Eigen::Index>(robot.sensors.size());
+  const auto nn = static_cast<Eigen::Index>(robot.neurons.size());
+  robot.w_sensor_neuron = Eigen::MatrixXd::Zero(ns, nn);
+  robot.w_neuron_neuron = Eigen::MatrixXd::Zero(nn, nn);
+  auto center = [&](int sphere) -> const Eigen::Vector3d& {
+    if (sphere < 0 || sphere >= static_cast<int>(robot.spheres.size()))
+      throw std::logic_error("set_ctrnn_weights: sensor or neuron on a missing sphere");
+    return robot.spheres[sphere].center;
+  };
+  CppnOutputs out;
+  for (Eigen::Index k = 0; k < ns; ++k) {
+    const Sensor& s = robot.sensors[k];
+    const Eigen::Vector3d& a = center(s.sphere);
+    for (Eigen::Index i = 0; i < nn; ++i) {
+      const Eigen::Vector3d mid = (a + center(robot.neurons[i].sphere)) / 2.0;
+      probe.query(mid, 0.0, &s.type, out);
+      robot.w_sensor_neuron(k, i) = expressed_weight(out[kOutWeight], params);
+    }
+  }
+  for (Eigen::Index j = 0; j < nn; ++j) {
+    const Eigen::Vector3d& a = center(robot.neurons[j].sphere);
+    for (Eigen::Index i = j; i < nn; ++i) {
+      const Eigen::Vector3d mid = (a + center(robot.neurons[i].sphere)) / 2.0;
+      probe.query(mid, 0.0, out);
+      robot.w_neuron_neuron(j, i) = robot.w_neuron_neuron(i, j) =
+          expressed_weight(out[kOutWeight], params);
+    }
+  }
+}
+
+}  // namespace robozoo
