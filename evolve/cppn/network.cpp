@@ -62,7 +62,9 @@ int Network::num_inputs() const { return num_inputs_; }
 int Network::num_outputs() const { return num_outputs_; }
 
 void Network::query(const double* inputs, double* outputs) {
+  ++queries_;
   if (!single_pass_) {
+    --queries_;  // counted by query_synchronous
     query_synchronous(inputs, outputs);
     return;
   }
@@ -79,6 +81,7 @@ void Network::query(const double* inputs, double* outputs) {
 }
 
 void Network::query_synchronous(const double* inputs, double* outputs) {
+  ++queries_;
   const int n = static_cast<int>(act_.size());
   std::fill(prev_.begin(), prev_.end(), 0.0);
   for (int i = 0; i < num_inputs_; ++i) prev_[i] = cur_[i] = inputs[i];

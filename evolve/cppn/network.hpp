@@ -30,6 +30,9 @@ class Network {
   /// inputs like any other); outputs: num_outputs() values written.
   void query(const double* inputs, double* outputs);
 
+  /// Queries answered so far (for benchmarks: growth's CPPN share).
+  long long queries() const { return queries_; }
+
   /// Convenience wrapper (allocates the result).
   std::vector<double> query(const std::vector<double>& inputs);
 
@@ -42,6 +45,7 @@ class Network {
   std::vector<int> order_;          // evaluation order for the single-pass path
   bool single_pass_ = false;        // acyclic and depth <= updates: one pass is bit-identical
   std::vector<double> cur_, prev_;  // node values
+  long long queries_ = 0;
 };
 
 }  // namespace robozoo
