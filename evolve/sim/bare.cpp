@@ -4,6 +4,7 @@
 #include <ode/ode.h>
 
 #include "evolve/sim/contacts.hpp"
+#include "evolve/sim/params_check.hpp"
 #include "evolve/sim/robot_check.hpp"
 #include "evolve/sim/servo.hpp"
 #include "evolve/sim/simulation.hpp"
@@ -13,6 +14,7 @@ namespace robozoo {
 
 void simulate_bare(const Robot& robot, const SimParams& params, int steps) {
   check_robot(robot);
+  check_sim_params(params);
   OdeWorld world(robot, params);
   const ContactFinder finder(robot);
   const std::vector<double> limits = motor_torque_limits(robot, params);

@@ -3,13 +3,15 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <ode/ode.h>
 
 #include "evolve/sim/contacts.hpp"
 #include "evolve/sim/ctrnn.hpp"
+#include "evolve/sim/params_check.hpp"
 #include "evolve/sim/robot_check.hpp"
-#include "evolve/sim/rules.hpp"
+#include "evolve/fitness/rules.hpp"
 #include "evolve/sim/sensors.hpp"
 #include "evolve/sim/servo.hpp"
 #include "evolve/sim/world.hpp"
@@ -19,21 +21,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-void check_params(const SimParams& p) {
-  if (p.steps < 0) throw std::invalid_argument("SimParams.steps must be >= 0");
-  if (!(p.dt > 0)) throw std::invalid_argument("SimParams.dt must be > 0");
-  if (p.quickstep_iterations < 1) throw std::invalid_argument("SimParams.quickstep_iterations must be >= 1");
-  if (!(p.distance_sensor_range > 0)) throw std::invalid_argument("SimParams.distance_sensor_range must be > 0");
-  if (p.max_contacts < 1) throw std::invalid_argument("SimParams.max_contacts must be >= 1");
-  if (p.rest_steps < 1) throw std::invalid_argument("SimParams.rest_steps must be >= 1");
-}
-
 Eigen::Vector3d vec(const dReal* p) { return {p[0], p[1], p[2]}; }
 
 }  // namespace
 
 struct Simulation::Impl {
-  const Robot& robot;
+  const Robot robot;  // a copy: the world, the controller and the rules refer to it
   const SimParams p;
   OdeWorld world;
   ContactFinder finder;
@@ -55,17 +48,17 @@ struct Simulation::Impl {
   Impl(const Robot& r, const SimParams& params)
       : robot((check_robot(r), r)),
         p(params),
-        world(r, params),
-        finder(r),
-        ctrnn(r),
-        limits(motor_torque_limits(r, params)),
-        joint_of_sphere(r.spheres.size(), -1),
-        angles(r.joints.size(), 0.0),
-        lin_vel(r.num_bodies, Eigen::Vector3d::Zero()),
-        ang_vel(r.num_bodies, Eigen::Vector3d::Zero()),
-        record(static_cast<int>(r.spheres.size()), r.num_bodies),
+        world(robot, params),
+        finder(robot),
+        ctrnn(robot),
+        limits(motor_torque_limits(robot, params)),
+        joint_of_sphere(robot.spheres.size(), -1),
+        angles(robot.joints.size(), 0.0),
+        lin_vel(robot.num_bodies, Eigen::Vector3d::Zero()),
+        ang_vel(robot.num_bodies, Eigen::Vector3d::Zero()),
+        record(static_cast<int>(robot.spheres.size()), robot.num_bodies),
         rand_seed(params.ode_seed) {
-    for (size_t k = 0; k < r.joints.size(); ++k) joint_of_sphere[r.joints[k].sphere] = static_cast<int>(k);
+    for (size_t k = 0; k < robot.joints.size(); ++k) joint_of_sphere[robot.joints[k].sphere] = static_cast<int>(k);
     // dRandInt drives quickstep's constraint reordering; its seed is process-global,
     // so each simulation keeps its own and installs it around every step.
     dRandSetSeed(rand_seed);
@@ -157,7 +150,7 @@ struct Simulation::Impl {
 };
 
 Simulation::Simulation(const Robot& robot, const SimParams& params) {
-  check_params(params);
+  check_sim_params(params);
   impl_ = std::make_unique<Impl>(robot, params);
 }
 Simulation::~Simulation() = default;
@@ -165,6 +158,15 @@ Simulation::~Simulation() = default;
 bool Simulation::step() { return impl_->step(); }
 bool Simulation::done() const { return impl_->done; }
 const SimState& Simulation::state() const { return impl_->state; }
+void Simulation::set_body_velocity(int body, const Eigen::Vector3d& v, const Eigen::Vector3d& w) {
+  if (impl_->state.step != 0) throw std::logic_error("Simulation::set_body_velocity: only before the first step");
+  if (body < 0 || body >= impl_->world.num_bodies())
+    throw std::invalid_argument("Simulation::set_body_velocity: no body " + std::to_string(body));
+  dBodySetLinearVel(impl_->world.body(body), v.x(), v.y(), v.z());
+  dBodySetAngularVel(impl_->world.body(body), w.x(), w.y(), w.z());
+  impl_->lin_vel[body] = v;  // accelerations are measured from the velocities set here
+  impl_->ang_vel[body] = w;
+}
 SimResult Simulation::result() const {
   return apply_rules(impl_->record, impl_->d_init, impl_->distance_to_target(), impl_->p);
 }

@@ -44,9 +44,10 @@ struct SimState {
 
 class Simulation {
  public:
-  /// Builds the ODE world for `robot` (which must outlive the Simulation) and
-  /// calls dRandSetSeed(params.ode_seed). Sensors are read once so state() is
-  /// valid before the first step.
+  /// Checks `robot` (check_robot; std::invalid_argument on a bad model or bad
+  /// params), keeps a copy of it, builds the ODE world and calls
+  /// dRandSetSeed(params.ode_seed). Sensors are read once so state() is valid
+  /// before the first step.
   Simulation(const Robot& robot, const SimParams& params);
   ~Simulation();
   Simulation(const Simulation&) = delete;
@@ -59,7 +60,11 @@ class Simulation {
   bool step();
   bool done() const;
   const SimState& state() const;
-  /// The episode's result (rules applied; precedence in evolve/sim/rules.hpp);
+  /// Gives body b an initial linear (m/s) and angular (rad/s) velocity. Only
+  /// before the first step (throws std::logic_error after); for tests and
+  /// perturbation experiments. Evaluations never call it.
+  void set_body_velocity(int body, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular);
+  /// The episode's result (rules applied; precedence in evolve/fitness/rules.hpp);
   /// valid once done(), partial before (the rules judge the steps run so far).
   SimResult result() const;
 

@@ -1,4 +1,4 @@
-#include "evolve/sim/rules.hpp"
+#include "evolve/fitness/rules.hpp"
 
 #include <algorithm>
 #include <cmath>
