@@ -19,9 +19,11 @@ namespace robozoo {
 struct SimResult {
   Outcome outcome = Outcome::Completed;
   int steps_run = 0;                 ///< steps actually simulated (count)
+  bool stopped_early = false;        ///< every body came to rest before the last step
   double d_init = 0.0;               ///< initial COM distance to the target (m)
   double d_final = 0.0;              ///< final COM distance, = d_init when invalidated (m)
-  double d = 0.0;                    ///< d_init - d_final (m)
+  double d = 0.0;                    ///< d_init - d_final, 0 when invalidated (m)
+  double d_raw = 0.0;                ///< d_init - (actual final distance), before the rules (m)
   std::vector<double> ground_contact_fraction;  ///< per sphere, steps touching ground / steps_run
   std::vector<double> mean_angular_speed;       ///< per body, |time-averaged angular velocity| (rad/s)
   double max_linear_acceleration = 0.0;         ///< largest seen (m/s^2)
@@ -42,21 +44,28 @@ struct SimState {
 
 class Simulation {
  public:
-  /// Builds the ODE world for `robot` (which must outlive the Simulation) and
-  /// calls dRandSetSeed(params.ode_seed). Sensors are read once so state() is
-  /// valid before the first step.
+  /// Checks `robot` (check_robot; std::invalid_argument on a bad model or bad
+  /// params), keeps a copy of it, builds the ODE world and calls
+  /// dRandSetSeed(params.ode_seed). Sensors are read once so state() is valid
+  /// before the first step.
   Simulation(const Robot& robot, const SimParams& params);
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
   /// One physics step: sensors -> CTRNN -> servos -> collide -> quickstep ->
-  /// bookkeeping. Returns false once the episode is over (all steps run, early
-  /// stop, or a fault); further calls do nothing and return false.
+  /// bookkeeping. Returns true when it took a step; once the episode is over
+  /// (all steps run, early stop, or a fault) calls do nothing and return false,
+  /// so `while (sim.step()) use(sim.state());` sees every state, the last included.
   bool step();
   bool done() const;
   const SimState& state() const;
-  /// The episode's result (rules applied); valid once done(), partial before.
+  /// Gives body b an initial linear (m/s) and angular (rad/s) velocity. Only
+  /// before the first step (throws std::logic_error after); for tests and
+  /// perturbation experiments. Evaluations never call it.
+  void set_body_velocity(int body, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular);
+  /// The episode's result (rules applied; precedence in evolve/fitness/rules.hpp);
+  /// valid once done(), partial before (the rules judge the steps run so far).
   SimResult result() const;
 
   /// Per-stage wall time in seconds accumulated so far (for the benchmark).

@@ -1,0 +1,32 @@
+#pragma once
+// Joint actuation (DESIGN.md section 2): a motor neuron's output o in (-1, 1)
+// sets its hinge's target angle o * range; a velocity servo drives the hinge
+// towards it with speed gain * (target - angle), capped at servo_max_speed, and
+// a torque limit that scales with the masses the hinge moves.
+#include <vector>
+
+#include "evolve/growth/robot.hpp"
+#include "evolve/sim/params.hpp"
+#include "evolve/sim/world.hpp"
+
+namespace robozoo {
+
+/// Commanded joint speed (rad/s) for a target and a current angle (rad).
+double servo_speed(double target, double angle, const SimParams& params);
+
+/// Per joint (robot.joints order), the side moment the torque limit scales
+/// with: the smaller over the two sides of the joint (the bodies on each side
+/// of the body tree once the joint is cut) of sum(sphere mass * lever), where
+/// a sphere's lever is its distance from the anchor, and at least its radius
+/// (so a side that is a single sphere around the anchor still gets a torque).
+/// Units kg m. Uses the model's (grown) positions.
+std::vector<double> joint_side_moments(const Robot& robot);
+
+/// Torque limits (N m) per joint: motor_strength * gravity * side moment.
+std::vector<double> motor_torque_limits(const Robot& robot, const SimParams& params);
+
+/// Sets every hinge's motor towards targets[i] = outputs[neuron] * range.
+void apply_servos(const OdeWorld& world, const Robot& robot, const std::vector<double>& neuron_outputs,
+                  const std::vector<double>& torque_limits, const SimParams& params);
+
+}  // namespace robozoo
