@@ -11,10 +11,18 @@ namespace robozoo {
 /// LCM's default URL: multicast that never leaves the host (ttl=0).
 inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
 
+/// Pacing of live publishing: UDP multicast drops packets when a burst overflows
+/// a subscriber's receive buffer (a champion's pose stream is ~1,000 messages at
+/// once), so the bus sends at most `bytes_per_second` after a `burst_bytes` burst.
+struct BusParams {
+  double bytes_per_second = 4e6;  ///< sustained rate (bytes/s); 0: unpaced
+  double burst_bytes = 64e3;      ///< sent at once before pacing starts (bytes)
+};
+
 class Bus {
  public:
   /// Connects to `url`; throws std::runtime_error naming the URL if LCM cannot start.
-  explicit Bus(const std::string& url);
+  explicit Bus(const std::string& url, BusParams params = {});
   ~Bus();
   Bus(const Bus&) = delete;
   Bus& operator=(const Bus&) = delete;
@@ -28,6 +36,9 @@ class Bus {
   std::string url_;
   std::unique_ptr<lcm::LCM> lcm_;
   int64_t failures_ = 0;
+  BusParams params_;
+  double tokens_ = 0;       // bytes that may be sent now
+  double last_refill_ = 0;  // (s, steady clock)
 };
 
 }  // namespace robozoo

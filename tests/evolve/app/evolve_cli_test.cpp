@@ -19,10 +19,14 @@ using namespace robozoo::testing;
 const std::vector<std::string> kSmall = {"--seed", "7", "--population", "24", "--generations", "4",
                                          "--steps", "400", "--quiet"};
 
-std::vector<std::string> evolve_args(const std::string& log, int workers,
-                                     std::vector<std::string> extra = {}) {
+// A run long enough (about 1.5 s on 2 cores) to be interrupted at several moments.
+const std::vector<std::string> kLonger = {"--seed", "7", "--population", "40", "--generations", "8",
+                                          "--steps", "1000", "--quiet"};
+
+std::vector<std::string> evolve_args(const std::string& log, int workers, std::vector<std::string> extra = {},
+                                     const std::vector<std::string>& size = kSmall) {
   std::vector<std::string> a = {bin("robozoo-evolve"), "--log", log, "--workers", std::to_string(workers)};
-  a.insert(a.end(), kSmall.begin(), kSmall.end());
+  a.insert(a.end(), size.begin(), size.end());
   a.insert(a.end(), extra.begin(), extra.end());
   return a;
 }
@@ -33,8 +37,9 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
-int run_evolve(const std::string& log, int workers, std::vector<std::string> extra = {}) {
-  const auto o = run_shell(join(evolve_args(log, workers, std::move(extra))));
+int run_evolve(const std::string& log, int workers, std::vector<std::string> extra = {},
+               const std::vector<std::string>& size = kSmall) {
+  const auto o = run_shell(join(evolve_args(log, workers, std::move(extra), size)));
   EXPECT_EQ(o.status, 0) << o.output;
   return o.status;
 }
@@ -74,17 +79,24 @@ TEST(EvolveCli, OneAndTwoWorkersGiveIdenticalLogs) {
 
 TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {
   TempDir dir;
-  ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2), 0);
+  ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2, {}, kLonger), 0);
   const std::string log = dir / "cut.lcmlog";
-  // Kill at several moments: right after start, and mid-run.
-  for (int delay_ms : {150, 900}) {
-    const pid_t pid = spawn(evolve_args(log, 2), dir / "out.txt");
+  // Kill at several moments: at start, early and mid-run; then once more while resuming.
+  for (int delay_ms : {20, 300, 800}) {
+    const pid_t pid = spawn(evolve_args(log, 2, {}, kLonger), dir / "out.txt");
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
     ::kill(pid, SIGKILL);
-    wait_status(pid);
+    EXPECT_EQ(wait_status(pid), 128 + SIGKILL) << "the run ended before the kill at " << delay_ms << " ms";
     // Its workers die with it (they watch their parent); give them a moment.
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    ASSERT_EQ(run_evolve(log, 2, {"--resume"}), 0);
+    if (file_exists(log + ".checkpoint")) {
+      const pid_t again = spawn(evolve_args(log, 2, {"--resume"}, kLonger), dir / "out2.txt");
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      ::kill(again, SIGKILL);
+      wait_status(again);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_EQ(run_evolve(log, 2, {"--resume"}, kLonger), 0);
     EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "")
         << "killed after " << delay_ms << " ms";
     std::remove(log.c_str());
@@ -111,15 +123,15 @@ TEST(EvolveCli, RefusesToOverwriteAResumableRun) {
 
 TEST(EvolveCli, WorkerKilledOnPurposeChangesNothing) {
   TempDir dir;
-  ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2), 0);
+  ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2, {}, kLonger), 0);
   const std::string log = dir / "hit.lcmlog";
-  const pid_t pid = spawn(evolve_args(log, 2), dir / "out.txt");
+  const pid_t pid = spawn(evolve_args(log, 2, {}, kLonger), dir / "out.txt");
   int killed = 0;
-  for (int i = 0; i < 200 && killed < 3; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  for (int i = 0; i < 40 && killed < 3; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
     const auto kids = children_of(pid);
-    if (!kids.empty() && i % 5 == 4) {
-      ::kill(kids.front(), SIGKILL);
+    if (kids.size() == 2 && i % 3 == 2) {
+      ::kill(kids[killed % 2], SIGKILL);
       ++killed;
     }
   }
@@ -142,10 +154,10 @@ TEST(EvolveCli, LiveRunIsRecordedCompletelyByLcmLogger) {
   const std::string url = "udpm://239.255.76.67:7667?ttl=0";
   const std::string script =
       "ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
-      "(lcm-logger -f -l '" + url + "' '" + (dir / "bus.lcmlog") + "' >/dev/null 2>&1 & L=$!; sleep 1; " +
+      "(lcm-logger -f --lcm-url='" + url + "' '" + (dir / "bus.lcmlog") + "' >/dev/null 2>&1 & L=\\$!; sleep 1; " +
       join(evolve_args(dir / "own.lcmlog", 2, {"--lcm-url", url})) +
-      "; S=$?; sleep 1; kill -INT $L; wait $L; exit $S)";
-  const auto o = run_shell("unshare -n sh -c \"" + script + "\"");
+      "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)";
+  const auto o = run_shell("timeout 120 unshare -n sh -c \"" + script + "\"");
   ASSERT_EQ(o.status, 0) << o.output;
   const auto own = read_event_log(dir / "own.lcmlog"), bus = read_event_log(dir / "bus.lcmlog");
   EXPECT_EQ(first_log_difference(own, bus), "");
