@@ -15,7 +15,8 @@ inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
 /// a subscriber's receive buffer (a champion's pose stream is ~1,000 messages at
 /// once), so the bus sends at most `bytes_per_second` after a `burst_bytes` burst.
 struct BusParams {
-  double bytes_per_second = 4e6;  ///< sustained rate (bytes/s); 0: unpaced
+  double bytes_per_second = 1e6;  ///< sustained rate (bytes/s); 0: unpaced. With the default
+                                  ///< 208 KiB socket buffer a subscriber may stall ~0.2 s
   double burst_bytes = 64e3;      ///< sent at once before pacing starts (bytes)
 };
 
