@@ -1,10 +1,22 @@
 #include "evolve/cppn/network.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <unordered_map>
 
 namespace robozoo {
+
+namespace {
+/// Bitwise inequality: +0.0 and -0.0 differ, a NaN equals its own bits.
+inline char bits_differ(double a, double b) {
+  uint64_t x, y;
+  std::memcpy(&x, &a, sizeof x);
+  std::memcpy(&y, &b, sizeof y);
+  return x != y;
+}
+}  // namespace
 
 Network::Network(const Genome& g, const GenomeLayout& layout, int updates)
     : num_inputs_(layout.num_inputs), num_outputs_(layout.num_outputs), updates_(updates) {
@@ -56,6 +68,8 @@ Network::Network(const Genome& g, const GenomeLayout& layout, int updates)
   single_pass_ = static_cast<int>(order_.size()) == n - num_inputs_ && max_depth <= updates_;
   cur_.assign(n, 0.0);
   prev_.assign(n, 0.0);
+  changed_cur_.assign(n, 0);
+  changed_prev_.assign(n, 0);
 }
 
 int Network::num_inputs() const { return num_inputs_; }
@@ -82,6 +96,47 @@ void Network::query(const double* inputs, double* outputs) {
 
 void Network::query_synchronous(const double* inputs, double* outputs) {
   ++queries_;
+  const int n = static_cast<int>(act_.size());
+  std::fill(prev_.begin(), prev_.end(), 0.0);
+  for (int i = 0; i < num_inputs_; ++i) prev_[i] = cur_[i] = inputs[i];
+  const int* from = in_from_.data();
+  const double* w = in_weight_.data();
+  // Update 1 computes every node from the zero state.
+  for (int node = num_inputs_; node < n; ++node) {
+    double s = 0.0;
+    for (int k = in_begin_[node]; k < in_begin_[node + 1]; ++k) s += w[k] * prev_[from[k]];
+    cur_[node] = activate(static_cast<Activation>(act_[node]), s);
+    changed_cur_[node] = bits_differ(cur_[node], prev_[node]);
+  }
+  // Inputs changed from 0 to their value before update 1, and never again.
+  for (int i = 0; i < num_inputs_; ++i) changed_cur_[i] = 0;
+  std::swap(cur_, prev_);
+  std::swap(changed_cur_, changed_prev_);
+  for (int u = 1; u < updates_; ++u) {
+    bool any = false;
+    for (int node = num_inputs_; node < n; ++node) {
+      bool dirty = false;
+      for (int k = in_begin_[node]; k < in_begin_[node + 1] && !dirty; ++k) dirty = changed_prev_[from[k]];
+      if (!dirty) {
+        cur_[node] = prev_[node];
+        changed_cur_[node] = 0;
+        continue;
+      }
+      double s = 0.0;
+      for (int k = in_begin_[node]; k < in_begin_[node + 1]; ++k) s += w[k] * prev_[from[k]];
+      cur_[node] = activate(static_cast<Activation>(act_[node]), s);
+      changed_cur_[node] = bits_differ(cur_[node], prev_[node]);
+      any |= changed_cur_[node] != 0;
+    }
+    std::swap(cur_, prev_);
+    std::swap(changed_cur_, changed_prev_);
+    if (!any) break;  // a fixed point: every later update repeats these values
+  }
+  // prev_ holds the newest values.
+  for (int o = 0; o < num_outputs_; ++o) outputs[o] = prev_[num_inputs_ + o];
+}
+
+void Network::query_reference(const double* inputs, double* outputs) {
   const int n = static_cast<int>(act_.size());
   std::fill(prev_.begin(), prev_.end(), 0.0);
   for (int i = 0; i < num_inputs_; ++i) prev_[i] = cur_[i] = inputs[i];

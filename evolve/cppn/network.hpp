@@ -24,7 +24,13 @@ class Network {
   /// for bit) what the synchronous updates give, and query() takes that path.
   bool single_pass() const { return single_pass_; }
   /// The synchronous-update procedure, always (for tests of the single-pass path).
+  /// A node is recomputed only when one of its inputs changed in the previous
+  /// update: a pure function of unchanged values gives the same bits, so this is
+  /// exactly the plain procedure (query_reference) at a fraction of the cost once
+  /// parts of the network have settled.
   void query_synchronous(const double* inputs, double* outputs);
+  /// The plain procedure: every node recomputed in every update (tests compare).
+  void query_reference(const double* inputs, double* outputs);
 
   /// inputs: num_inputs() values in node order (the bias input is read from
   /// inputs like any other); outputs: num_outputs() values written.
@@ -45,6 +51,7 @@ class Network {
   std::vector<int> order_;          // evaluation order for the single-pass path
   bool single_pass_ = false;        // acyclic and depth <= updates: one pass is bit-identical
   std::vector<double> cur_, prev_;  // node values
+  std::vector<char> changed_cur_, changed_prev_;  // value changed in this / the previous update
   long long queries_ = 0;
 };
 
