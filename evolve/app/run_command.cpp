@@ -18,8 +18,8 @@ namespace {
 RunConfig preset_config(const std::string& name) {
   RunConfig c;
   if (name == "short") {
-    c.neat.population = 60;
-    c.generations = 20;
+    c.neat.population = 100;
+    c.generations = 40;
   } else if (name == "paper") {
     // The paper's settings are the defaults.
   } else {
@@ -53,6 +53,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--job-timeout", o.job_timeout, "seconds before a hung evaluation's worker is replaced")
       ->check(CLI::PositiveNumber);
   app.add_flag("--quiet,-q", o.quiet, "no progress lines");
+  app.add_flag("--print-config", o.print_config,
+               "print the resolved configuration (JSON, every parameter with its value) and exit");
 }
 
 int run_run_command(const CLI::App& app, const RunOptions& o) {
@@ -69,6 +71,10 @@ int run_run_command(const CLI::App& app, const RunOptions& o) {
     if (app.count("--pose-every")) config.pose_every = o.pose_every;
     if (o.publish_all) config.publish_all = true;
     validate_config(config);
+    if (o.print_config) {
+      std::cout << config_to_json(config).dump(2) << "\n";
+      return 0;
+    }
     opts.run_id = o.run_id;
     opts.resume = o.resume;
     if (app.count("--lcm-url")) opts.lcm_url = o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url;

@@ -22,6 +22,7 @@ struct RunOptions {
   std::string run_id;
   double job_timeout = 600.0;
   bool quiet = false;
+  bool print_config = false;
 };
 
 void add_run_options(CLI::App& app, RunOptions& o);
