@@ -1,5 +1,6 @@
 #pragma once
 // Test support: run robozoo's programs as a user would, from the build tree.
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
