@@ -11,7 +11,7 @@ PACKAGES=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev ffmpeg
   libfreetype-dev fonts-dejavu-core
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libboost-math-dev
-  libgtest-dev
+  libgtest-dev gnuplot-nox
   iproute2 util-linux
 )
 
