@@ -1,0 +1,42 @@
+#pragma once
+// Test support: robozoo-evolve runs of known sizes, as command lines.
+#include <string>
+#include <vector>
+
+#include "evolve/io/event_log.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo::testing {
+
+// A small run that still sends robots to the simulator: 4 generations of 24.
+inline const std::vector<std::string> kSmall = {"--seed", "7", "--population", "24", "--generations", "4",
+                                                "--steps", "400", "--quiet"};
+
+// A run long enough (about 1.5 s on 2 cores) to be interrupted at several moments.
+inline const std::vector<std::string> kLonger = {"--seed", "7", "--population", "40", "--generations", "8",
+                                                 "--steps", "1000", "--quiet"};
+
+inline std::vector<std::string> evolve_args(const std::string& log, int workers,
+                                            std::vector<std::string> extra = {},
+                                            const std::vector<std::string>& size = kSmall) {
+  std::vector<std::string> a = {bin("robozoo-evolve"), "--log", log, "--workers", std::to_string(workers)};
+  a.insert(a.end(), size.begin(), size.end());
+  a.insert(a.end(), extra.begin(), extra.end());
+  return a;
+}
+
+/// A shell command line of single-quoted words.
+inline std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += "'" + x + "' ";
+  return s;
+}
+
+/// Events of a channel in a log.
+inline size_t count_channel(const LogContents& log, const std::string& channel) {
+  size_t n = 0;
+  for (const auto& r : log.records) n += r.channel == channel;
+  return n;
+}
+
+}  // namespace robozoo::testing
