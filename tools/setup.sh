@@ -12,6 +12,7 @@ PACKAGES=(
   libfreetype-dev fonts-dejavu-core
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libboost-math-dev
   libgtest-dev gnuplot-nox
+  openmpi-bin libopenmpi-dev
   iproute2 util-linux
 )
 
