@@ -69,7 +69,7 @@ std::string champion_line(const ChampionResult& c, bool with_run) {
     o << "  spheres " << c.spheres << "  morphology " << (c.morphology_logged ? "same" : "not logged")
       << "  poses " << c.poses_compared;
     if (c.poses_expected > 0 && c.poses_expected != c.poses_logged) o << " (of " << c.poses_expected << " in its trajectory)";
-    if (c.poses_logged == 0 && c.recomputed_outcome > 0) o << " (trajectory not logged)";
+    if (c.poses_logged == 0 && c.recomputed_outcome > 0) o << " (none logged under this id)";
     if (c.fitness_compared) o << "  fitness " << short_number(c.recomputed_fitness);
     if (c.max_error > 0) o << "  max error " << error_text(c.max_error);
   }

@@ -3,12 +3,13 @@
 // and saying exactly where it is damaged.
 //
 // LCM's own reader (lcm_eventlog_read_next_event, used by evolve's
-// read_event_log) resynchronises on the sync word after garbage but does not
-// say that it skipped anything, and trusts the length fields of a header it
-// finds inside garbage. This reader keeps the same resynchronisation and the
-// same events for an intact log, checks every header (channel length 1-999,
-// data length >= 0 and inside the file) before it allocates, and reports each
-// skipped byte range, a cut last event and jumps in the event numbers.
+// read_event_log) says nothing about what it skipped: LCM 1.3.1 stops at the
+// first garbage that follows an event ("Invalid header after log data"), and
+// trusts the length fields of a header it finds. This reader gives the same
+// events for an intact log, resynchronises on the sync word after garbage,
+// checks every header (channel length 1-999, data length >= 0 and inside the
+// file) before it allocates, and reports each skipped byte range, a cut last
+// event and jumps in the event numbers.
 #include <cstdint>
 #include <string>
 #include <vector>
