@@ -69,7 +69,7 @@ void compare_poses(const LogContents& log, const LogIndex& index, const LoggedGe
 }  // namespace
 
 ChampionResult check_champion(const LogContents& log, const LogIndex& index, const LoggedGenome& g,
-                              const RunConfig& config, const ChampionCheckParams& params) {
+                              const RunConfig& config, const ChampionCheckParams& params, RecomputeCache* cache) {
   ChampionResult out;
   out.run_id = g.run_id;
   out.generation = g.generation;
@@ -105,7 +105,24 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
     cmp.note("links", "a cycle", "no cycle (the run is feed-forward)");
   }
   try {
-    const Robot robot = grow_genome(genome, config.eval);
+    // Growth and evaluation: pure functions of (genes, configuration).
+    const std::string config_key = cache ? config_to_json(config).dump() : std::string();
+    const RecomputeCache::Entry* done = cache ? cache->find(genome, config_key) : nullptr;
+    RecomputeCache::Entry fresh;
+    if (done) {
+      out.same_genes_as = done->first_genome_id;
+      out.same_genes_generation = done->first_generation;
+    } else {
+      fresh.genes = genome;
+      fresh.config = config_key;
+      fresh.first_genome_id = g.genome_id;
+      fresh.first_generation = g.generation;
+      fresh.robot = grow_genome(genome, config.eval);
+      fresh.evaluation = evaluate(genome, config.eval);
+      done = cache ? &cache->add(std::move(fresh)) : &fresh;
+    }
+    const Robot& robot = done->robot;
+    const Evaluation& e = done->evaluation;
     out.spheres = static_cast<int>(robot.spheres.size());
     if (g.morphology_event >= 0) {
       morphology_t logged{};
@@ -118,7 +135,6 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
     if (!out.morphology_logged) out.problems.push_back("its morphology is not in the log");
     compare_poses(log, index, g, robot, config, cmp, out);
 
-    const Evaluation e = evaluate(genome, config.eval);
     out.fitness_compared = true;
     out.logged_fitness = gm.fitness;
     out.recomputed_fitness = e.fitness;

@@ -9,6 +9,7 @@
 #include "evolve/config/run_config.hpp"
 #include "evolve/io/event_log.hpp"
 #include "replay/log_index.hpp"
+#include "replay/recompute_cache.hpp"
 #include "replay/value_compare.hpp"
 
 namespace robozoo {
@@ -23,6 +24,9 @@ struct ChampionResult {
   std::vector<std::string> problems;  ///< why (part of) it could not be checked; Unusable when not empty
   // What was recomputed
   int spheres = 0;                    ///< spheres grown (count)
+  int64_t same_genes_as = -1;         ///< an earlier genome with the same genes whose growth and
+                                      ///< evaluation were re-used, -1 if none
+  int32_t same_genes_generation = -1; ///< its generation
   bool morphology_logged = false;
   bool morphology_ok = false;
   int64_t poses_logged = 0;           ///< decodable poses of this genome in the log (count)
@@ -49,8 +53,10 @@ struct ChampionCheckParams {
 
 /// Checks `g` against a re-computation with `config` (the configuration of
 /// its run's ROBOZOO_RUN). Bad input becomes problems in the result, never an
-/// exception.
+/// exception. With a cache, the growth and evaluation of genes already
+/// recomputed are re-used (poses are always re-simulated).
 ChampionResult check_champion(const LogContents& log, const LogIndex& index, const LoggedGenome& g,
-                              const RunConfig& config, const ChampionCheckParams& params);
+                              const RunConfig& config, const ChampionCheckParams& params,
+                              RecomputeCache* cache = nullptr);
 
 }  // namespace robozoo

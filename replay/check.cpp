@@ -72,6 +72,7 @@ CheckReport check_log(const ScannedLog& scanned, const CheckOptions& options, co
   ChampionCheckParams params;
   params.tolerance = options.tolerance;
   params.keep = options.keep;
+  RecomputeCache cache;
   for (size_t i = 0; i < todo.size(); ++i) {
     const LoggedGenome& g = *todo[i];
     const auto config = g.run_event >= 0 ? config_of_event.find(static_cast<size_t>(g.run_event)) : config_of_event.end();
@@ -85,7 +86,7 @@ CheckReport check_log(const ScannedLog& scanned, const CheckOptions& options, co
       c.problems.push_back("no ROBOZOO_RUN of run " + g.run_id + " before it, so its configuration is unknown");
       report.champions.push_back(std::move(c));
     } else {
-      report.champions.push_back(check_champion(log, index, g, config->second, params));
+      report.champions.push_back(check_champion(log, index, g, config->second, params, &cache));
     }
     if (progress) progress(i + 1, todo.size());
   }

@@ -70,6 +70,8 @@ std::string champion_line(const ChampionResult& c, bool with_run) {
       << "  poses " << c.poses_compared;
     if (c.poses_expected > 0 && c.poses_expected != c.poses_logged) o << " (of " << c.poses_expected << " in its trajectory)";
     if (c.poses_logged == 0 && c.recomputed_outcome > 0) o << " (none logged under this id)";
+    if (c.same_genes_as >= 0)
+      o << "  same genes as genome " << c.same_genes_as << " (gen " << c.same_genes_generation << ")";
     if (c.fitness_compared) o << "  fitness " << short_number(c.recomputed_fitness);
     if (c.max_error > 0) o << "  max error " << error_text(c.max_error);
   }
@@ -150,6 +152,7 @@ nlohmann::json to_json(const CheckReport& r) {
                               {"status", status_name(c.status)},
                               {"problems", c.problems},
                               {"spheres", c.spheres},
+                              {"same_genes_as", c.same_genes_as >= 0 ? json(c.same_genes_as) : json(nullptr)},
                               {"morphology_logged", c.morphology_logged},
                               {"morphology_same", c.morphology_ok},
                               {"poses_logged", c.poses_logged},

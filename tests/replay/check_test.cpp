@@ -263,6 +263,42 @@ TEST(Check, NoRunMessageOrNoFileIsFatal) {
   EXPECT_NE(missing.fatal.find("absent.lcmlog"), std::string::npos) << missing.fatal;
 }
 
+/// The small log with its first champion's genome and morphology logged again
+/// under a fresh id, as NEAT does when a champion stays best; `fitness_delta`
+/// is added to the copy's logged fitness.
+LogContents with_champion_copy(double fitness_delta) {
+  LogContents log = small_log();
+  const LogRecord genome = log.records[nth_on(log, kChannelGenome, 0)];
+  const LogRecord morphology = log.records[nth_on(log, kChannelMorphology, 0)];
+  genome_t g = decode_as<genome_t>(genome);
+  morphology_t m = decode_as<morphology_t>(morphology);
+  g.genome_id = m.genome_id = 424242;
+  g.generation = m.generation = 9;  // a generation with no generation_t: its genome counts as its champion
+  g.fitness += fitness_delta;
+  LogRecord a = genome, b = morphology;
+  a.data = encode_message(g);
+  b.data = encode_message(m);
+  log.records.push_back(a);
+  log.records.push_back(b);
+  return log;
+}
+
+TEST(Check, RepeatedGenesAreRecomputedOnceButStillCompared) {
+  TempDir dir;
+  write_log(with_champion_copy(0.0), dir / "copy.lcmlog");
+  const CheckReport r = check_log_file(dir / "copy.lcmlog", {});
+  EXPECT_EQ(r.exit_code(), 0) << format_text(r);
+  ASSERT_EQ(r.champions.size(), 5u);
+  EXPECT_EQ(r.champions[4].genome_id, 424242);
+  EXPECT_EQ(r.champions[4].same_genes_as, r.champions[0].genome_id);
+  EXPECT_TRUE(r.champions[4].morphology_ok);
+  write_log(with_champion_copy(0.5), dir / "copy_bad.lcmlog");
+  const CheckReport bad = check_log_file(dir / "copy_bad.lcmlog", {});
+  EXPECT_EQ(bad.exit_code(), 1);
+  EXPECT_EQ(bad.champions[4].status, ChampionResult::Status::Diverged);
+  EXPECT_EQ(bad.champions[4].mismatches.at(0).field, "fitness");
+}
+
 TEST(Check, ProgressIsReportedPerGenome) {
   std::vector<std::pair<size_t, size_t>> calls;
   check_log_file(small_run_log(), {}, [&](size_t done, size_t total) { calls.emplace_back(done, total); });
