@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "evolve/messages/build.hpp"
+
 namespace robozoo {
 
 namespace {
@@ -87,9 +89,11 @@ std::string format_text(const CheckReport& r) {
   for (const auto& run : r.runs)
     o << "  run " << run.run_id << ": robozoo " << run.software_version << ", " << run.regime << ", seed " << run.seed
       << ", population " << run.population << ", " << run.generations << " generations\n";
-  if (!r.fatal.empty()) {
-    o << "UNUSABLE: " << r.fatal << "\n";
-  }
+  for (const auto& run : r.runs)
+    if (r.forced && run.software_version != software_version())
+      o << "  note: --force: run " << run.run_id << " (robozoo " << run.software_version << ") is checked with robozoo "
+        << software_version() << "\n";
+  if (!r.fatal.empty()) o << "UNUSABLE: " << r.fatal << "\n";
   const bool with_run = r.runs.size() > 1;
   for (const auto& c : r.champions) o << champion_line(c, with_run) << "\n";
   for (const auto& p : r.input_problems) {

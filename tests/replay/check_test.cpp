@@ -232,6 +232,8 @@ TEST(Check, AnotherSoftwareVersionIsRefusedUnlessForced) {
   const CheckReport forced = check_log_file(dir / "version.lcmlog", force);
   EXPECT_EQ(forced.exit_code(), 0) << format_text(forced);
   EXPECT_TRUE(forced.forced);
+  EXPECT_NE(format_text(forced).find("note: --force: run feedforward-s7 (robozoo 9.9.9)"), std::string::npos)
+      << format_text(forced);
 }
 
 TEST(Check, TheConfigurationComesFromTheLogNotFromDefaults) {
