@@ -51,6 +51,7 @@ std::vector<PlannedEvent> plan_pass(const LogContents& log, const LogIndex& inde
   std::set<Key> sent_genome, sent_morphology;
   struct LastPose { double t; double sim_time; };
   std::map<Key, LastPose> last_pose;
+  std::map<std::string, bool> matches;  // channel -> selected (one regex match per channel name)
 
   std::vector<PlannedEvent> plan;
   double t = 0.0;  // play time of the current event, before the speed (s)
@@ -70,8 +71,10 @@ std::vector<PlannedEvent> plan_pass(const LogContents& log, const LogIndex& inde
           t = std::max(t, lp->second.t + (e.sim_time - lp->second.sim_time));
         last_pose[key] = {t, e.sim_time};
       }
-      const bool selected = e.kind != EventKind::Undecodable && r.channel != "LCM_SELF_TEST" &&
-                            std::regex_match(r.channel, channels);
+      auto m = matches.find(r.channel);
+      if (m == matches.end())
+        m = matches.emplace(r.channel, r.channel != "LCM_SELF_TEST" && std::regex_match(r.channel, channels)).first;
+      const bool selected = e.kind != EventKind::Undecodable && m->second;
       if (selected) {
         if (e.kind == EventKind::Pose) {  // state first
           auto send_state = [&](auto& latest, auto& sent, const auto& k) {
