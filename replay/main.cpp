@@ -1,0 +1,216 @@
+// robozoo-replay: check that logged runs are deterministic, replay them on an
+// LCM bus, and re-simulate a logged genome live (issue 6).
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <iostream>
+
+#include "evolve/io/bus.hpp"
+#include "replay/check.hpp"
+#include "replay/live_sim.hpp"
+#include "replay/player.hpp"
+#include "replay/progress_bar.hpp"
+
+namespace {
+
+using namespace robozoo;
+
+struct CheckArgs {
+  std::string log;
+  double tolerance = 0.0;
+  bool json = false, force = false, all = false, quiet = false, progress = false, no_progress = false;
+  size_t keep = 20;
+};
+
+struct PlayArgs {
+  std::string log;
+  std::string lcm_url = kDefaultLcmUrl;
+  PlayOptions options;
+  bool log_time = false, quiet = false;
+};
+
+struct SimArgs {
+  std::string log;
+  std::string lcm_url = kDefaultLcmUrl;
+  LiveSimOptions options;
+  bool quiet = false;
+};
+
+int run_check(const CheckArgs& a) {
+  CheckOptions o;
+  o.tolerance = a.tolerance;
+  o.force = a.force;
+  o.all_genomes = a.all;
+  o.keep = a.keep;
+  const bool bar_on = !a.quiet && !a.no_progress && (a.progress || ::isatty(STDERR_FILENO));
+  ProgressBar bar(std::cerr, "checking");
+  const auto t0 = std::chrono::steady_clock::now();
+  CheckProgress progress;
+  if (bar_on)
+    progress = [&](size_t done, size_t total) {
+      bar.update(static_cast<int64_t>(done), static_cast<int64_t>(total),
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    };
+  const CheckReport report = check_log_file(a.log, o, progress);
+  bar.finish();
+  if (a.json)
+    std::cout << to_json(report).dump(2) << "\n";
+  else if (!a.quiet)
+    std::cout << format_text(report);
+  return report.exit_code();
+}
+
+/// Reads a log for play or sim; prints its damage as warnings.
+bool load(const std::string& path, bool quiet, ScannedLog& scanned, LogIndex& index) {
+  try {
+    scanned = scan_event_log(path);
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-replay: " << e.what() << "\n";
+    return false;
+  }
+  index = index_log(scanned.contents);
+  if (!quiet) {
+    for (const auto& d : scanned.damage) std::cerr << "robozoo-replay: warning: " << path << ": " << d.describe() << "\n";
+    for (const auto& p : index.problems)
+      std::cerr << "robozoo-replay: warning: event " << p.eventnum << " (" << p.channel << "): " << p.what << "\n";
+  }
+  return true;
+}
+
+int run_play(const PlayArgs& a) {
+  ScannedLog scanned;
+  LogIndex index;
+  if (!load(a.log, a.quiet, scanned, index)) return 2;
+  PlayOptions o = a.options;
+  o.pace_poses_by_sim_time = !a.log_time;
+  try {
+    plan_pass(scanned.contents, index, o);  // bad options are reported before the bus starts
+    Bus bus(a.lcm_url);
+    SteadyPlayClock clock;
+    if (!a.quiet)
+      std::cerr << "robozoo-replay: playing " << a.log << " on " << a.lcm_url << " at " << o.speed << "x"
+                << (o.loop ? ", looping" : "") << "\n";
+    const PlayStats s = play(scanned.contents, index, o, clock,
+                             [&](const std::string& ch, const std::vector<uint8_t>& d) { return bus.publish(ch, d); });
+    if (!a.quiet)
+      std::cerr << "robozoo-replay: sent " << s.events_sent << " events (" << s.state_events_sent
+                << " of them state first) in " << s.passes << " pass" << (s.passes == 1 ? "" : "es") << "\n";
+    if (s.publish_failures) {
+      std::cerr << "robozoo-replay: " << s.publish_failures << " events could not be sent\n";
+      return 1;
+    }
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "robozoo-replay: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-replay: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+int run_sim(const SimArgs& a) {
+  ScannedLog scanned;
+  LogIndex index;
+  if (!load(a.log, a.quiet, scanned, index)) return 2;
+  try {
+    Bus bus(a.lcm_url);
+    SteadyPlayClock clock;
+    const LiveSimStats s =
+        live_simulate(scanned.contents, index, a.options, clock,
+                      [&](const std::string& ch, const std::vector<uint8_t>& d) { return bus.publish(ch, d); });
+    if (!a.quiet)
+      std::cerr << "robozoo-replay: re-simulated genome " << a.options.genome_id << " (run " << s.run_id
+                << ", generation " << s.generation << ")" << (s.simulated_in_evolution ? "" : " (not simulated in evolution: its r term is under 15)")
+                << ": " << s.steps_run << " steps, d = " << s.d << " m, " << s.poses_sent << " poses sent on "
+                << a.lcm_url << "\n";
+    return s.publish_failures ? 1 : 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "robozoo-replay: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-replay: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "robozoo-replay: re-grow and re-simulate the genomes of a robozoo log (written by robozoo-evolve or\n"
+      "recorded by lcm-logger) with the same code and the configuration of the log's ROBOZOO_RUN."};
+  app.set_version_flag("--version", ROBOZOO_VERSION);
+  app.require_subcommand(1);
+
+  CheckArgs c;
+  CLI::App* check = app.add_subcommand(
+      "check",
+      "Check every champion: grow it and compare the morphology field by field, re-simulate it and compare every "
+      "logged pose, re-evaluate it and compare the fitness. Exit 0: everything matches; 1: a divergence; 2: "
+      "unusable input.");
+  check->add_option("LOG", c.log, "the LCM log")->required();
+  check->add_option("--tolerance", c.tolerance,
+                    "allowed error |a-b|/max(1,|a|,|b|) for logs made on another machine (default 0: bit for bit)")
+      ->check(CLI::NonNegativeNumber);
+  check->add_flag("--json", c.json, "print the report as JSON");
+  check->add_flag("--force", c.force, "check runs written by another robozoo version");
+  check->add_flag("--all-genomes", c.all, "check every logged genome (--publish-all runs), not only champions");
+  check->add_option("--max-mismatches", c.keep, "differences listed per genome in the JSON report")
+      ->check(CLI::Range(1, 1000000));
+  check->add_flag("--progress", c.progress, "show the progress bar even when stderr is not a terminal");
+  check->add_flag("--no-progress", c.no_progress, "no progress bar");
+  check->add_flag("--quiet,-q", c.quiet, "no output; the exit status only");
+
+  PlayArgs p;
+  CLI::App* playc = app.add_subcommand(
+      "play",
+      "Republish the log on an LCM bus at real-time speed. The latest ROBOZOO_RUN and the current champion's "
+      "genome and morphology always go out before its poses, so a viewer that joins can draw at once.");
+  playc->add_option("LOG", p.log, "the LCM log")->required();
+  playc->add_option("--lcm-url", p.lcm_url, "LCM URL to publish on")->capture_default_str();
+  playc->add_option("--speed", p.options.speed, "times real time")->check(CLI::PositiveNumber)->capture_default_str();
+  playc->add_option("--channels", p.options.channels, "regular expression of the channels to play (whole name)")
+      ->capture_default_str();
+  playc->add_flag("--loop", p.options.loop, "start again after the last event, until interrupted");
+  playc->add_option("--start-generation", p.options.start_generation, "skip the events of earlier generations")
+      ->check(CLI::NonNegativeNumber);
+  playc->add_flag("--log-time", p.log_time,
+                  "pace poses by their log timestamps (a trajectory is logged in one burst) instead of their "
+                  "simulated time");
+  playc->add_flag("--quiet,-q", p.quiet, "no messages");
+
+  SimArgs s;
+  CLI::App* simc = app.add_subcommand(
+      "sim",
+      "Re-simulate one logged genome and publish its full-rate pose stream at real time (after its run, genome "
+      "and morphology), e.g. for robozoo-render live.");
+  simc->add_option("LOG", s.log, "the LCM log")->required();
+  simc->add_option("--genome", s.options.genome_id, "genome id")->required();
+  simc->add_option("--run-id", s.options.run_id, "its run (only needed when the log holds several runs)");
+  simc->add_option("--lcm-url", s.lcm_url, "LCM URL to publish on")->capture_default_str();
+  simc->add_option("--speed", s.options.speed, "times real time")->check(CLI::PositiveNumber)->capture_default_str();
+  simc->add_option("--pose-every", s.options.pose_every, "publish every k-th step")
+      ->check(CLI::Range(1, 1000000000))
+      ->capture_default_str();
+  simc->add_flag("--force", s.options.force, "accept a run written by another robozoo version");
+  simc->add_flag("--quiet,-q", s.quiet, "no messages");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "robozoo-replay: " << e.what() << " (see --help)\n";
+    return 2;
+  }
+  if (check->parsed()) return run_check(c);
+  if (playc->parsed()) return run_play(p);
+  return run_sim(s);
+}

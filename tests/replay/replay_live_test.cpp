@@ -1,0 +1,110 @@
+// robozoo-replay on a real LCM bus: play and sim recorded by LCM's own
+// lcm-logger inside a private network namespace (DESIGN.md section 5). Runs
+// alone (RUN_SERIAL): a starved subscriber drops multicast packets.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "evolve/io/log_compare.hpp"
+#include "tests/replay/replay_fixtures.hpp"
+
+namespace robozoo {
+namespace {
+
+using namespace robozoo::testing;
+
+const std::string kUrl = "udpm://239.255.76.67:7667?ttl=0";
+
+/// Runs `command` (a robozoo-replay command line, quoted for sh) while lcm-logger
+/// records the bus into `recording`; returns robozoo-replay's outcome.
+testing::Outcome recorded(const std::string& command, const std::string& recording) {
+  const std::string script =
+      "ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
+      "(lcm-logger -f --lcm-url='" + kUrl + "&recv_buf_size=4194304' '" + recording +
+      "' >/dev/null 2>&1 & L=\\$!; sleep 1; " + command + "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)";
+  return run_shell("timeout 120 unshare -n sh -c \"" + script + "\"");
+}
+
+std::string replay_cmd(const std::string& args) { return "'" + bin("robozoo-replay") + "' " + args; }
+
+/// The robozoo events of `log` whose channel matches `regex`, as (channel, bytes).
+std::vector<std::pair<std::string, std::vector<uint8_t>>> events(const LogContents& log, const std::string& regex) {
+  std::vector<std::pair<std::string, std::vector<uint8_t>>> out;
+  const std::regex re(regex);
+  for (const auto& r : log.records)
+    if (std::regex_match(r.channel, re)) out.emplace_back(r.channel, r.data);
+  return out;
+}
+
+TEST(ReplayLive, PlayIsRecordedByLcmLoggerEventForEventInOrder) {
+  TempDir dir;
+  const auto o = recorded(replay_cmd("play '" + small_run_log() + "' --lcm-url '" + kUrl + "' --speed 50"),
+                          dir / "bus.lcmlog");
+  ASSERT_EQ(o.status, 0) << o.output;
+  const LogContents own = read_event_log(small_run_log()), bus = read_event_log(dir / "bus.lcmlog");
+  EXPECT_EQ(first_log_difference(own, bus), "");
+  EXPECT_EQ(events(bus, "ROBOZOO_.*"), events(own, "ROBOZOO_.*"));  // the very bytes, utime included
+}
+
+TEST(ReplayLive, ChosenChannelsArriveInOrderWithTheStateBeforeThePoses) {
+  TempDir dir;
+  const auto o = recorded(replay_cmd("play '" + small_run_log() + "' --lcm-url '" + kUrl +
+                                     "' --speed 50 --channels 'ROBOZOO_(GENERATION|POSE)'"),
+                          dir / "bus.lcmlog");
+  ASSERT_EQ(o.status, 0) << o.output;
+  const LogContents own = read_event_log(small_run_log()), bus = read_event_log(dir / "bus.lcmlog");
+  const std::string chosen = "ROBOZOO_(GENERATION|POSE)";
+  EXPECT_EQ(events(bus, chosen), events(own, chosen));
+  // Each trajectory is preceded by its run, and its own genome and morphology.
+  int64_t last_genome = -1, genome_seen = -1, morphology_seen = -1;
+  bool run = false;
+  int trajectories = 0;
+  for (const auto& r : bus.records) {
+    if (r.channel == kChannelRun) run = true;
+    if (r.channel == kChannelGenome) genome_seen = decode_as<genome_t>(r).genome_id;
+    if (r.channel == kChannelMorphology) morphology_seen = decode_as<morphology_t>(r).genome_id;
+    if (r.channel != kChannelPose) continue;
+    const pose_t p = decode_as<pose_t>(r);
+    if (p.genome_id != last_genome) {
+      ++trajectories;
+      EXPECT_TRUE(run) << "pose of genome " << p.genome_id << " before any run message";
+      EXPECT_EQ(genome_seen, p.genome_id);
+      EXPECT_EQ(morphology_seen, p.genome_id);
+      last_genome = p.genome_id;
+    }
+  }
+  EXPECT_GT(trajectories, 0);
+}
+
+TEST(ReplayLive, SimPublishesStateThenEveryStep) {
+  TempDir dir;
+  const LogContents own = read_event_log(small_run_log());
+  int64_t id = -1;
+  int last_step = -1;  // the logged trajectory ends with the episode's last step
+  for (const auto& r : own.records)
+    if (r.channel == kChannelPose) {
+      const pose_t p = decode_as<pose_t>(r);
+      id = p.genome_id;
+      last_step = p.step;
+    }
+  ASSERT_GE(id, 0);
+  const auto o = recorded(
+      replay_cmd("sim '" + small_run_log() + "' --lcm-url '" + kUrl + "' --speed 20 --genome " + std::to_string(id)),
+      dir / "bus.lcmlog");
+  ASSERT_EQ(o.status, 0) << o.output;
+  const LogContents bus = read_event_log(dir / "bus.lcmlog");
+  const auto robozoo = events(bus, "ROBOZOO_.*");
+  ASSERT_GT(robozoo.size(), 3u);
+  EXPECT_EQ(robozoo[0].first, kChannelRun);
+  EXPECT_EQ(robozoo[1].first, kChannelGenome);
+  EXPECT_EQ(robozoo[2].first, kChannelMorphology);
+  for (size_t i = 3; i < robozoo.size(); ++i) {
+    ASSERT_EQ(robozoo[i].first, kChannelPose);
+    EXPECT_EQ(decode_as<pose_t>(LogRecord{0, 0, kChannelPose, robozoo[i].second}).step, static_cast<int>(i - 3));
+  }
+  EXPECT_EQ(robozoo.size() - 3, static_cast<size_t>(last_step + 1));
+}
+
+}  // namespace
+}  // namespace robozoo
