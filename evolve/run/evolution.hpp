@@ -27,6 +27,18 @@ struct EvolveOptions {
   bool resume = false;          ///< continue from the checkpoint
 };
 
+/// Where the evolution process's time went in one generation (s): the serial part
+/// of a run, which more workers (or MPI ranks) do not shorten.
+struct StepTimings {
+  double evaluate = 0.0;    ///< waiting for the evaluator's results (s)
+  double messages = 0.0;    ///< building, logging and publishing the run, generation, genome and
+                            ///< morphology messages, growing the published genomes' robots (s)
+  double trajectory = 0.0;  ///< re-simulating a new champion and logging its poses (s)
+  double breeding = 0.0;    ///< selection, speciation and reproduction: Population::advance (s)
+  double checkpoint = 0.0;  ///< syncing the log to disk and writing the checkpoint (s)
+  double total = 0.0;       ///< the whole generation, evaluation included (s)
+};
+
 /// What happened in one generation (for progress output and tests).
 struct ProgressReport {
   GenerationSummary summary;
@@ -35,6 +47,7 @@ struct ProgressReport {
   double elapsed_seconds = 0.0;
   double remaining_seconds = 0.0;  ///< estimate
   double simulated_share = 0.0;    ///< share of robots sent to the simulator
+  StepTimings timings;             ///< where this generation's time went
 };
 
 /// One line of progress for a generation.
