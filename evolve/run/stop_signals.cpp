@@ -1,4 +1,4 @@
-#include "evolve/app/stop_signals.hpp"
+#include "evolve/run/stop_signals.hpp"
 
 #include <pthread.h>
 #include <signal.h>
