@@ -1,5 +1,6 @@
 #include "evolve/app/mpi_command.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -12,10 +13,10 @@
 namespace robozoo {
 
 namespace {
-/// Said when mpirun stops rank 0: what happened, what is on disk, how to go on.
-std::string stop_message(const Evolution& evo, const EvolveOptions& opts, int generations_done) {
-  return "an MPI rank died or the job was cancelled (mpirun's message names the rank); the checkpoint " +
-         evo.checkpoint_path() + " is intact after " + std::to_string(generations_done) + " of " +
+/// What is on disk and how to go on.
+std::string intact(const Evolution& evo, const EvolveOptions& opts) {
+  return "the checkpoint " + evo.checkpoint_path() + " is intact after " +
+         std::to_string(std::max(0, evo.checkpointed_generations())) + " of " +
          std::to_string(evo.config().generations) + " generations; " + resume_hint(opts.log_path);
 }
 }  // namespace
@@ -42,6 +43,8 @@ int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& ses
     RunConfig config;
     EvolveOptions opts;
     if (const auto status = resolve_run(app, o, config, opts)) return *status;
+    // Rank 0's largest serial cost, overlapped with the next generation's evaluations.
+    opts.background_checkpoint = true;
     std::unique_ptr<Evolution> evo;
     try {
       evo = std::make_unique<Evolution>(config, opts, evaluator);
@@ -53,23 +56,33 @@ int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& ses
       std::cerr << "robozoo-evolve: run " << evo->run_id() << " in " << opts.log_path << " is already complete\n";
       return 0;
     }
-    watcher.set_message(stop_message(*evo, opts, evo->generation()));
+    // Said when mpirun stops rank 0, made then (the checkpoint may be on its way);
+    // forgotten before `evo` goes, whichever way this scope ends.
+    watcher.set_message_source([&evo = *evo, &opts] {
+      return "an MPI rank died or the job was cancelled (mpirun's message names the rank); " + intact(evo, opts);
+    });
+    struct Forget {
+      StopWatcher& w;
+      ~Forget() { w.set_message(""); }
+    } forget{watcher};
     try {
       // The worker ranks evaluate with the run's configuration, as resolved here
       // (from the checkpoint when resuming).
       transport.start(config_to_json(evo->config()).dump());
       if (!o.quiet) std::cerr << run_banner(*evo, opts, ranks);
       evo->run([&](const ProgressReport& r) {
-        watcher.set_message(stop_message(*evo, opts, r.summary.generation + 1));
         if (!o.quiet) std::cerr << format_progress(r) << std::endl;
       });
     } catch (const std::exception& e) {
-      std::cerr << "robozoo-evolve: " << e.what() << "; the checkpoint " << evo->checkpoint_path()
-                << " is intact after " << evo->generation() << " of " << evo->config().generations
-                << " generations; " << resume_hint(opts.log_path) << std::endl;
+      std::string also;
+      try {
+        evo->wait_for_checkpoint();
+      } catch (const std::exception& w) {
+        also = " (and the last checkpoint could not be written: " + std::string(w.what()) + ")";
+      }
+      std::cerr << "robozoo-evolve: " << e.what() << also << "; " << intact(*evo, opts) << std::endl;
       session.abort(1);  // a rank may be hung in a job: end every rank now
     }
-    watcher.set_message("");
     if (!o.quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";
     return 0;
   } catch (const std::exception& e) {

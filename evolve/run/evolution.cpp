@@ -79,6 +79,8 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     elapsed_before_ = c.elapsed_seconds;
     finished_ = c.finished;
     resumed_ = true;
+    checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint,
+                                                            generations_done());
     if (!finished_) log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
   } else {
     validate_config(config_);
@@ -86,6 +88,7 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     rng_ = Rng(static_cast<uint64_t>(config_.seed));
     population_ = std::make_unique<Population>(config_.neat, config_.regime, layout, rng_);
     log_.emplace(EventLogWriter::create(options_.log_path));
+    checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint);
     save_checkpoint();
   }
   if (!options_.lcm_url.empty() && !finished_) bus_ = std::make_unique<Bus>(options_.lcm_url);
@@ -94,6 +97,8 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
 Evolution::~Evolution() = default;
 
 int Evolution::generation() const { return population_->generation(); }
+
+int Evolution::generations_done() const { return finished_ ? config_.generations : population_->generation(); }
 
 void Evolution::emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime) {
   log_->write(channel, bytes, utime);
@@ -115,7 +120,8 @@ void Evolution::save_checkpoint() {
   c.log_events = log_->events();
   c.elapsed_seconds = elapsed_before_ + elapsed_;
   c.finished = finished_;
-  write_checkpoint(checkpoint_path_, c);
+  checkpoint_writer_->write(std::move(c), generations_done());
+  if (finished_) checkpoint_writer_->wait();  // a finished run's last checkpoint is on disk
 }
 
 void Evolution::run(const std::function<void(const ProgressReport&)>& on_generation) {

@@ -62,8 +62,12 @@ StopWatcher::~StopWatcher() {
 }
 
 void StopWatcher::set_message(const std::string& message) {
+  set_message_source([message] { return message; });
+}
+
+void StopWatcher::set_message_source(std::function<std::string()> source) {
   std::lock_guard<std::mutex> lock(mutex_);
-  message_ = message;
+  source_ = std::move(source);
 }
 
 void StopWatcher::watch() {
@@ -76,7 +80,8 @@ void StopWatcher::watch() {
     if (const char* name = strsignal(sig)) line += std::string(" (") + name + ")";
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (!message_.empty()) line += ": " + message_;
+      const std::string message = source_ ? source_() : "";
+      if (!message.empty()) line += ": " + message;
     }
     write_all(STDERR_FILENO, line + "\n");
     ::_exit(128 + sig);

@@ -9,6 +9,7 @@
 // files written atomically (the checkpoint) are whole, the log is cut back to the
 // checkpoint on --resume.
 #include <atomic>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -33,12 +34,15 @@ class StopWatcher {
 
   /// What to say after "stopped by signal N (name): " (thread-safe).
   void set_message(const std::string& message);
+  /// The same, made when the signal comes (on the watcher's thread, so `source`
+  /// must be thread-safe and valid until replaced); empty: say nothing more.
+  void set_message_source(std::function<std::string()> source);
 
  private:
   void watch();
   std::string program_;
   std::mutex mutex_;
-  std::string message_;
+  std::function<std::string()> source_;
   std::atomic<bool> stopping_{false};
   std::thread thread_;
 };

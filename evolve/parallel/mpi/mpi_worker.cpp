@@ -64,4 +64,21 @@ bool serve_mpi_session(const WorkFnFactory& make, MpiWorkerStats* stats, MpiWork
   }
 }
 
+std::vector<MpiWorkerStats> gather_worker_stats(const MpiWorkerStats& mine) {
+  int rank = 0, size = 0;
+  check(MPI_Comm_rank(mpi_detail::world(), &rank), "MPI_Comm_rank");
+  check(MPI_Comm_size(mpi_detail::world(), &size), "MPI_Comm_size");
+  const double sent[2] = {static_cast<double>(mine.jobs), mine.busy_seconds};
+  std::vector<double> all(rank == 0 ? 2 * static_cast<size_t>(size) : 0);
+  check(MPI_Gather(sent, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, 0, mpi_detail::world()), "MPI_Gather");
+  std::vector<MpiWorkerStats> out;
+  if (rank != 0) return out;
+  out.resize(static_cast<size_t>(size));
+  for (size_t r = 0; r < out.size(); ++r) {
+    out[r].jobs = static_cast<uint64_t>(all[2 * r]);
+    out[r].busy_seconds = all[2 * r + 1];
+  }
+  return out;
+}
+
 }  // namespace robozoo

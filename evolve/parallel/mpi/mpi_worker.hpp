@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "evolve/parallel/protocol.hpp"
 #include "evolve/parallel/worker.hpp"
@@ -35,5 +36,10 @@ using WorkFnFactory = std::function<WorkFn(const std::string& setup)>;
 /// error, and whatever `make` throws: the caller then ends the job (MPI_Abort),
 /// as rank 0 would wait for this rank forever.
 bool serve_mpi_session(const WorkFnFactory& make, MpiWorkerStats* stats = nullptr, MpiWorkerParams params = {});
+
+/// Collective, every rank: each gives its statistics (rank 0 its own, usually
+/// empty); rank 0 gets them all, indexed by rank, the other ranks an empty vector.
+/// Throws std::runtime_error on an MPI error.
+std::vector<MpiWorkerStats> gather_worker_stats(const MpiWorkerStats& mine);
 
 }  // namespace robozoo

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <thread>
@@ -48,7 +49,10 @@ TEST(StopWatcher, SignalWritesTheMessageAndEndsTheProcess) {
       block_stop_signals();
       StopWatcher watcher("prog");
       watcher.set_message("first");
-      watcher.set_message("checkpoint intact; resume with: prog --resume");
+      std::atomic<int> done{1};
+      watcher.set_message_source([&done] { return "after " + std::to_string(done.load()) + " generations"; });
+      done = 3;  // read when the signal comes
+      watcher.set_message("checkpoint intact after " + std::to_string(done.load()) + "; resume with: prog --resume");
       ::kill(::getpid(), sig);
       std::this_thread::sleep_for(std::chrono::seconds(10));  // the watcher ends us first
       ::_exit(0);
@@ -56,8 +60,23 @@ TEST(StopWatcher, SignalWritesTheMessageAndEndsTheProcess) {
     ASSERT_TRUE(WIFEXITED(e.wait_status)) << sig;
     EXPECT_EQ(WEXITSTATUS(e.wait_status), 128 + sig);
     EXPECT_EQ(e.err, "prog: stopped by signal " + std::to_string(sig) + " (" + strsignal(sig) +
-                         "): checkpoint intact; resume with: prog --resume\n");
+                         "): checkpoint intact after 3; resume with: prog --resume\n");
   }
+}
+
+TEST(StopWatcher, MessageMadeWhenTheSignalComes) {
+  const Ended e = in_child([] {
+    block_stop_signals();
+    StopWatcher watcher("prog");
+    std::atomic<int> done{1};
+    watcher.set_message_source([&done] { return "after " + std::to_string(done.load()) + " generations"; });
+    done = 4;
+    ::kill(::getpid(), SIGTERM);
+    std::this_thread::sleep_for(std::chrono::seconds(10));
+    ::_exit(0);
+  });
+  ASSERT_TRUE(WIFEXITED(e.wait_status));
+  EXPECT_EQ(e.err, std::string("prog: stopped by signal 15 (") + strsignal(SIGTERM) + "): after 4 generations\n");
 }
 
 TEST(StopWatcher, AfterTheWatcherASignalHasItsDefaultAction) {

@@ -230,7 +230,19 @@ int play_root(const MpiSession& mpi) {
     }
   }
   { MpiTransport last(in_session(session)); }  // never started: tells the worker ranks that no session follows
-  return failed ? 1 : 0;
+  // The worker ranks' own count: 2 + 2 + 60 + 1 (abandoned, still answered) + 1 jobs.
+  const std::vector<MpiWorkerStats> stats = gather_worker_stats(MpiWorkerStats{});
+  uint64_t jobs = 0;
+  double busy = 0.0;
+  for (const auto& st : stats) {
+    jobs += st.jobs;
+    busy += st.busy_seconds;
+  }
+  const bool counted = stats.size() == 3 && stats[0].jobs == 0 && jobs == 66 && busy >= 1.2;
+  std::cout << "scenario worker_stats "
+            << (counted ? std::string("ok") : "FAILED: " + std::to_string(jobs) + " jobs, " + std::to_string(busy) + " s")
+            << std::endl;
+  return failed || !counted ? 1 : 0;
 }
 
 int play_worker(const MpiSession& session) {
@@ -246,6 +258,7 @@ int play_worker(const MpiSession& session) {
   int sessions = 0;
   while (serve_mpi_session(make_work, &stats)) ++sessions;
   if (sessions != 5) std::cout << "scenario sessions FAILED on rank " << session.rank() << ": " << sessions << std::endl;
+  gather_worker_stats(stats);
   return 0;
 }
 
@@ -273,7 +286,7 @@ TEST(MpiTransport, ScenariosOnThreeRanks) {
   const Outcome o = play_under_mpirun(3);
   EXPECT_EQ(o.status, 0) << o.output;
   for (const char* name : {"round_trip", "failure_comes_back", "pool_hands_out_dynamically",
-                           "hung_rank_fails_the_map", "garbage_is_a_death"})
+                           "hung_rank_fails_the_map", "garbage_is_a_death", "worker_stats"})
     EXPECT_NE(o.output.find(std::string("scenario ") + name + " ok"), std::string::npos) << name << "\n" << o.output;
   EXPECT_EQ(o.output.find("FAILED"), std::string::npos) << o.output;
 }
