@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -58,12 +59,16 @@ struct Options {
   int paper_runs = 60;
   int paper_generations = 500;
   int synthetic_generations = 50;
+  int trial_ranks = 8;
+  bool foreground_checkpoint = false;
   std::string json_path;
 };
 
-double process_cpu_seconds() {
+/// CPU time of the calling thread: rank 0's main thread, which hands out and
+/// collects every job (not the checkpoint thread, nor MPI's helper threads).
+double thread_cpu_seconds() {
   timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
@@ -77,7 +82,7 @@ struct JobRecord {
 struct GenerationRecord {
   std::vector<JobRecord> jobs;  // in genome order
   double evaluate_wall = 0.0;
-  double root_cpu = 0.0;        // rank 0's process CPU time while the workers evaluated
+  double root_cpu = 0.0;        // rank 0's main-thread CPU time while the workers evaluated
   uint64_t messages = 0;        // sent + received
   uint64_t bytes = 0;           // sent + received
   StepTimings timings;          // from the progress report
@@ -91,12 +96,12 @@ class RecordingEvaluator : public Evaluator {
     const MpiTransportStats& s = transport_.stats();
     const size_t k0 = s.timings.size();
     const uint64_t m0 = s.messages_sent + s.messages_received, b0 = s.bytes_sent + s.bytes_received;
-    const double cpu0 = process_cpu_seconds();
+    const double cpu0 = thread_cpu_seconds();
     const auto t0 = Clock::now();
     std::vector<EvalSummary> results = inner_.evaluate(genomes);
     GenerationRecord g;
     g.evaluate_wall = std::chrono::duration<double>(Clock::now() - t0).count();
-    g.root_cpu = process_cpu_seconds() - cpu0;
+    g.root_cpu = thread_cpu_seconds() - cpu0;
     g.messages = s.messages_sent + s.messages_received - m0;
     g.bytes = s.bytes_sent + s.bytes_received - b0;
     g.jobs.resize(genomes.size());
@@ -198,7 +203,7 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
     opts.log_path = o.log_path;
   }
   opts.lcm_url = o.lcm_url;
-  opts.background_checkpoint = true;  // as robozoo-evolve --mpi
+  opts.background_checkpoint = !o.foreground_checkpoint;  // as robozoo-evolve --mpi, unless asked
 
   MpiTransportParams tp;
   tp.record_jobs = true;
@@ -235,7 +240,8 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                 {"population", config.neat.population},
                 {"generations", config.generations},
                 {"steps", config.eval.sim.steps},
-                {"seed", config.seed}};
+                {"seed", config.seed},
+                {"background_checkpoint", opts.background_checkpoint}};
   std::printf("robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %d generations "
               "of up to %d steps, seed %lld\n\n",
               session.size(), session.host().c_str(), session.size() - 1, regime_name(config.regime).c_str(),
@@ -374,8 +380,11 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                                          "% simulated, the measured generations")
                                             .c_str()
                                       : "every robot simulated, late in a run");
-    std::printf("    ranks  s/generation  workers  rank0 link  serial  bound               speedup  one run    "
-                "experiment, runs one after another\n");
+    const Projection per_trial = project(*gens, o.trial_ranks, cluster);
+    const double trial_run = per_trial.seconds * o.paper_generations;
+    std::printf("    ranks  s/generation  workers  rank0 link  serial  bound              speedup  efficiency  one run    "
+                "experiment: trials one after another | %d-rank trials side by side\n",
+                o.trial_ranks);
     std::vector<int> counts = {session.size()};
     for (int r : o.ranks) counts.push_back(r);
     nlohmann::json rows = nlohmann::json::array();
@@ -383,18 +392,26 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
       if (r < 2) continue;
       const Projection p = project(*gens, r, cluster);
       const double run = p.seconds * o.paper_generations;
-      std::printf("    %5d  %12.3f  %7.3f  %10.4f  %6.3f  %-18s  %7.1f  %-9s  %s\n", r, p.seconds, p.workers,
-                  p.root_link, p.serial, main_bound(p).c_str(), one.seconds / p.seconds, human(run).c_str(),
-                  human(run * o.paper_runs).c_str());
+      const double speedup = one.seconds / p.seconds;
+      const double efficiency = speedup / (r - 1);
+      // The same ranks as a job array: floor(r / trial_ranks) trials at a time.
+      const int at_once = std::max(1, r / o.trial_ranks);
+      const double array_time = r < o.trial_ranks ? run * o.paper_runs
+                                                  : std::ceil(static_cast<double>(o.paper_runs) / at_once) * trial_run;
+      std::printf("    %5d  %12.3f  %7.3f  %10.4f  %6.3f  %-17s  %7.1f  %9.0f%%  %-9s  %-37s | %s\n", r, p.seconds,
+                  p.workers, p.root_link, p.serial, main_bound(p).c_str(), speedup, 100.0 * efficiency,
+                  human(run).c_str(), human(run * o.paper_runs).c_str(), human(array_time).c_str());
       rows.push_back({{"ranks", r},
                       {"seconds_per_generation", p.seconds},
                       {"workers_seconds", p.workers},
                       {"root_link_seconds", p.root_link},
                       {"serial_seconds", p.serial},
                       {"bound", main_bound(p)},
-                      {"speedup_vs_one_worker", one.seconds / p.seconds},
+                      {"speedup_vs_one_worker", speedup},
+                      {"efficiency", efficiency},
                       {"one_run_seconds", run},
-                      {"experiment_seconds_sequential", run * o.paper_runs}});
+                      {"experiment_seconds_sequential", run * o.paper_runs},
+                      {"experiment_seconds_job_array", array_time}});
     }
     proj[name] = rows;
   }
@@ -403,6 +420,7 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                      {"core_speed", cluster.core_speed},
                      {"paper_runs", o.paper_runs},
                      {"paper_generations", o.paper_generations},
+                     {"trial_ranks", o.trial_ranks},
                      {"rows", proj}};
   if (!o.json_path.empty()) std::ofstream(o.json_path) << j.dump(2) << "\n";
   return 0;
@@ -443,6 +461,11 @@ int main(int argc, char** argv) {
   app.add_option("--paper-runs", o.paper_runs, "runs of the experiment (default 60)")->check(CLI::Range(1, 100000));
   app.add_option("--paper-generations", o.paper_generations, "generations per run (default 500)")
       ->check(CLI::Range(1, 100000000));
+  app.add_option("--trial-ranks", o.trial_ranks,
+                 "ranks per trial when a budget of N ranks runs several trials at once (default 8)")
+      ->check(CLI::Range(2, 1000000));
+  app.add_flag("--foreground-checkpoint", o.foreground_checkpoint,
+               "write checkpoints within the generation, as a local run does (to compare)");
   app.add_option("--json", o.json_path, "also write every figure to this JSON file");
   try {
     app.parse(argc, argv);
