@@ -87,6 +87,7 @@ TEST(EvolveMpi, RankKilledMidRunThenResumedLocally) {
   ASSERT_GT(victim, 0) << "rank 2 not found among mpirun's children\n" << o.output;
   expect_resume_line(o, log);
   EXPECT_NE(o.output.find("an MPI rank died or the job was cancelled"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("cut.lcmlog.checkpoint is intact after "), std::string::npos) << o.output;
   // The checkpoint reads back, mid-run.
   const Checkpoint c = read_checkpoint(log + ".checkpoint");
   EXPECT_FALSE(c.finished);
