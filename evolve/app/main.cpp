@@ -1,22 +1,53 @@
 // robozoo-evolve: CPPN-NEAT evolution of complete robots, published over LCM
-// and logged (issue 4); `robozoo-evolve eval` grows and simulates one genome.
+// and logged (issue 4); `robozoo-evolve eval` grows and simulates one genome;
+// `mpirun -np N robozoo-evolve --mpi ...` evaluates on the ranks of an MPI job (issue 8).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <thread>
 
 #include "evolve/app/eval_command.hpp"
+#include "evolve/app/mpi_command.hpp"
 #include "evolve/app/run_command.hpp"
+#include "evolve/run/stop_signals.hpp"
+#include "evolve/parallel/mpi/mpi_session.hpp"
+
+namespace {
+/// --mpi must be known before parsing: MPI starts first, so that only rank 0 speaks.
+bool wants_mpi(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--mpi") == 0) return true;
+  return false;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
+  std::unique_ptr<robozoo::MpiSession> session;
+  std::unique_ptr<robozoo::StopWatcher> watcher;  // destroyed before the session
+  if (wants_mpi(argc, argv)) {
+    try {
+      robozoo::block_stop_signals();  // before MPI starts its threads: they inherit the mask
+      session = std::make_unique<robozoo::MpiSession>(&argc, &argv);
+      if (session->rank() == 0) watcher = std::make_unique<robozoo::StopWatcher>("robozoo-evolve");
+      else robozoo::unblock_stop_signals();  // worker ranks: SIGTERM ends them as usual
+    } catch (const std::exception& e) {
+      std::cerr << "robozoo-evolve: --mpi: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  const bool silent = session && session->rank() != 0;  // only rank 0 prints help and errors
+
   CLI::App app{
       "robozoo-evolve: evolve complete robots (body, joints, sensors, CTRNN brain) with CPPN-NEAT,\n"
       "selected for directed displacement in ODE. Every event goes to an LCM log (and, with --lcm-url,\n"
       "to the LCM bus); a checkpoint after every generation lets --resume continue a killed run.\n"
+      "On a cluster: mpirun -np N robozoo-evolve --mpi ... (rank 0 evolves, the others evaluate).\n"
       "Precedence of settings: defaults < --preset < --config FILE < command-line flags."};
   app.set_version_flag("--version", ROBOZOO_VERSION);
   robozoo::RunOptions run;
@@ -29,15 +60,24 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return silent ? 0 : app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return silent ? 0 : app.exit(e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return silent ? 0 : app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "robozoo-evolve: " << e.what() << " (see --help)\n";
+    if (!silent) std::cerr << "robozoo-evolve: " << e.what() << " (see --help)\n";
     return 2;
   }
-  if (eval_cmd->parsed()) return robozoo::run_eval_command(eval);
+  if (eval_cmd->parsed()) {
+    if (session) {
+      if (!silent) std::cerr << "robozoo-evolve: --mpi is for evolution runs, not for eval\n";
+      return 2;
+    }
+    return robozoo::run_eval_command(eval);
+  }
+  if (session)
+    return session->rank() == 0 ? robozoo::run_mpi_root(app, run, *session, *watcher)
+                                : robozoo::run_mpi_worker(*session);
   return robozoo::run_run_command(app, run);
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <thread>
 
 #include "evolve/config/run_config.hpp"
@@ -55,11 +56,12 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_flag("--quiet,-q", o.quiet, "no progress lines");
   app.add_flag("--print-config", o.print_config,
                "print the resolved configuration (JSON, every parameter with its value) and exit");
+  app.add_flag("--mpi", o.mpi,
+               "evaluate on the ranks of an MPI job: mpirun -np N robozoo-evolve --mpi ... (N >= 2; rank 0 "
+               "evolves, logs and checkpoints, ranks 1..N-1 evaluate; --workers is ignored)");
 }
 
-int run_run_command(const CLI::App& app, const RunOptions& o) {
-  RunConfig config;
-  EvolveOptions opts;
+std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConfig& config, EvolveOptions& opts) {
   try {
     config = o.preset.empty() ? RunConfig{} : preset_config(o.preset);
     if (!o.config_file.empty()) config = load_config_file(o.config_file, config);
@@ -96,6 +98,24 @@ int run_run_command(const CLI::App& app, const RunOptions& o) {
     std::cerr << "robozoo-evolve: " << e.what() << "\n";
     return 2;
   }
+  return std::nullopt;
+}
+
+std::string run_banner(const Evolution& evo, const EvolveOptions& opts, const std::string& evaluators) {
+  std::ostringstream out;
+  out << "robozoo-evolve: run " << evo.run_id() << " (" << regime_name(evo.config().regime) << ", seed "
+      << evo.config().seed << ", population " << evo.config().neat.population << ", " << evo.config().generations
+      << " generations, " << evaluators << ")"
+      << (evo.resumed() ? " resumed at generation " + std::to_string(evo.generation()) : "") << "\n  log "
+      << opts.log_path << "\n  checkpoint " << evo.checkpoint_path() << "\n"
+      << (opts.lcm_url.empty() ? "" : "  live on " + opts.lcm_url + "\n");
+  return out.str();
+}
+
+int run_run_command(const CLI::App& app, const RunOptions& o) {
+  RunConfig config;
+  EvolveOptions opts;
+  if (const auto status = resolve_run(app, o, config, opts)) return *status;
 
   const int workers = o.workers > 0 ? o.workers : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   try {
@@ -112,14 +132,7 @@ int run_run_command(const CLI::App& app, const RunOptions& o) {
       std::cerr << "robozoo-evolve: run " << evo->run_id() << " in " << opts.log_path << " is already complete\n";
       return 0;
     }
-    if (!o.quiet) {
-      std::cerr << "robozoo-evolve: run " << evo->run_id() << " (" << regime_name(evo->config().regime)
-                << ", seed " << evo->config().seed << ", population " << evo->config().neat.population << ", "
-                << evo->config().generations << " generations, " << workers << " workers)"
-                << (evo->resumed() ? " resumed at generation " + std::to_string(evo->generation()) : "")
-                << "\n  log " << opts.log_path << "\n  checkpoint " << evo->checkpoint_path() << "\n"
-                << (opts.lcm_url.empty() ? "" : "  live on " + opts.lcm_url + "\n");
-    }
+    if (!o.quiet) std::cerr << run_banner(*evo, opts, std::to_string(workers) + " workers");
     evo->run([&](const ProgressReport& r) {
       if (!o.quiet) std::cerr << format_progress(r) << std::endl;
     });

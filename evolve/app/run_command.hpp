@@ -1,7 +1,11 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
+
+#include "evolve/config/run_config.hpp"
+#include "evolve/run/evolution.hpp"
 
 namespace robozoo {
 
@@ -23,11 +27,21 @@ struct RunOptions {
   double job_timeout = 600.0;
   bool quiet = false;
   bool print_config = false;
+  bool mpi = false;  // evaluate on the ranks of an MPI job (mpirun); --workers is then ignored
 };
 
 void add_run_options(CLI::App& app, RunOptions& o);
 /// Runs (or resumes) an evolution; returns the process exit status
 /// (0 done, 2 bad configuration or unusable files, 1 failure during the run).
 int run_run_command(const CLI::App& app, const RunOptions& o);
+
+/// Resolves a run's configuration and files from the command line. Returns the
+/// exit status when the program stops here (2: bad configuration or files, said in
+/// one line on stderr; 0: --print-config printed), nothing when the run goes on.
+std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConfig& config, EvolveOptions& opts);
+
+/// The lines printed when a run starts (log, checkpoint, live URL); `evaluators`
+/// says what evaluates, e.g. "2 workers".
+std::string run_banner(const Evolution& evo, const EvolveOptions& opts, const std::string& evaluators);
 
 }  // namespace robozoo

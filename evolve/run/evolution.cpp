@@ -79,6 +79,8 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     elapsed_before_ = c.elapsed_seconds;
     finished_ = c.finished;
     resumed_ = true;
+    checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint,
+                                                            generations_done());
     if (!finished_) log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
   } else {
     validate_config(config_);
@@ -86,6 +88,7 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     rng_ = Rng(static_cast<uint64_t>(config_.seed));
     population_ = std::make_unique<Population>(config_.neat, config_.regime, layout, rng_);
     log_.emplace(EventLogWriter::create(options_.log_path));
+    checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint);
     save_checkpoint();
   }
   if (!options_.lcm_url.empty() && !finished_) bus_ = std::make_unique<Bus>(options_.lcm_url);
@@ -94,6 +97,8 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
 Evolution::~Evolution() = default;
 
 int Evolution::generation() const { return population_->generation(); }
+
+int Evolution::generations_done() const { return finished_ ? config_.generations : population_->generation(); }
 
 void Evolution::emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime) {
   log_->write(channel, bytes, utime);
@@ -115,7 +120,8 @@ void Evolution::save_checkpoint() {
   c.log_events = log_->events();
   c.elapsed_seconds = elapsed_before_ + elapsed_;
   c.finished = finished_;
-  write_checkpoint(checkpoint_path_, c);
+  checkpoint_writer_->write(std::move(c), generations_done());
+  if (finished_) checkpoint_writer_->wait();  // a finished run's last checkpoint is on disk
 }
 
 void Evolution::run(const std::function<void(const ProgressReport&)>& on_generation) {
@@ -152,12 +158,16 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   const int32_t gen = population_->generation();
   const std::vector<Genome>& genomes = population_->genomes();
 
+  StepTimings timing;
+  auto tm = std::chrono::steady_clock::now();
   const int64_t t_run = now_us();
   emit(kChannelRun, encode_message(make_run_message(run_id_, config_, t_run)), t_run);
+  timing.messages += seconds_since(tm);
 
   const auto te = std::chrono::steady_clock::now();
   const std::vector<EvalSummary> results = evaluator_.evaluate(genomes);
   const double eval_seconds = seconds_since(te);
+  timing.evaluate = eval_seconds;
   if (results.size() != genomes.size())
     throw std::logic_error("evaluator returned " + std::to_string(results.size()) + " results for " +
                            std::to_string(genomes.size()) + " genomes");
@@ -205,6 +215,7 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   };
 
   s.generation_seconds = seconds_since(t0);
+  tm = std::chrono::steady_clock::now();
   const int64_t t_gen = now_us();
   emit(kChannelGeneration, encode_message(make_generation_message(run_id_, s, t_gen)), t_gen);
   publish_genome(champ);
@@ -216,22 +227,31 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   Genome anonymous = champion;
   anonymous.id = 0;
   const uint64_t champion_hash = genome_hash(anonymous);
+  timing.messages += seconds_since(tm);
+  tm = std::chrono::steady_clock::now();
   if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated)
     publish_trajectory(champion, gen, results[champ]);
   last_champion_hash_ = champion_hash;
+  timing.trajectory = seconds_since(tm);
 
   std::vector<double> fitness(results.size());
   for (size_t i = 0; i < results.size(); ++i) fitness[i] = results[i].fitness;
   const bool last = gen + 1 >= config_.generations;
   ProgressReport report;
   report.summary = s;
+  tm = std::chrono::steady_clock::now();
   if (last) {
     finished_ = true;
   } else {
     population_->advance(fitness, rng_);
   }
+  timing.breeding = seconds_since(tm);
   elapsed_ += seconds_since(t0);
+  tm = std::chrono::steady_clock::now();
   save_checkpoint();
+  timing.checkpoint = seconds_since(tm);
+  timing.total = seconds_since(t0);
+  report.timings = timing;
 
   report.generations_total = config_.generations;
   report.elapsed_seconds = elapsed_before_ + elapsed_;

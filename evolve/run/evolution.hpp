@@ -15,6 +15,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/neat/population.hpp"
 #include "evolve/run/checkpoint.hpp"
+#include "evolve/run/checkpoint_writer.hpp"
 #include "evolve/run/evaluator.hpp"
 
 namespace robozoo {
@@ -25,6 +26,22 @@ struct EvolveOptions {
   std::string checkpoint_path;  ///< empty: log_path + ".checkpoint"
   std::string lcm_url;          ///< empty: no live publishing
   bool resume = false;          ///< continue from the checkpoint
+  bool background_checkpoint = false;  ///< write each generation's checkpoint on a thread while the
+                                       ///< next generation is evaluated (robozoo-evolve --mpi: rank 0's
+                                       ///< largest serial cost); a failed write is reported one
+                                       ///< generation later, the last one before run() returns
+};
+
+/// Where the evolution process's time went in one generation (s): the serial part
+/// of a run, which more workers (or MPI ranks) do not shorten.
+struct StepTimings {
+  double evaluate = 0.0;    ///< waiting for the evaluator's results (s)
+  double messages = 0.0;    ///< building, logging and publishing the run, generation, genome and
+                            ///< morphology messages, growing the published genomes' robots (s)
+  double trajectory = 0.0;  ///< re-simulating a new champion and logging its poses (s)
+  double breeding = 0.0;    ///< selection, speciation and reproduction: Population::advance (s)
+  double checkpoint = 0.0;  ///< syncing the log to disk and writing the checkpoint (s)
+  double total = 0.0;       ///< the whole generation, evaluation included (s)
 };
 
 /// What happened in one generation (for progress output and tests).
@@ -35,6 +52,7 @@ struct ProgressReport {
   double elapsed_seconds = 0.0;
   double remaining_seconds = 0.0;  ///< estimate
   double simulated_share = 0.0;    ///< share of robots sent to the simulator
+  StepTimings timings;             ///< where this generation's time went
 };
 
 /// One line of progress for a generation.
@@ -63,10 +81,17 @@ class Evolution {
   const RunConfig& config() const { return config_; }
   /// True when the constructor resumed from a checkpoint.
   bool resumed() const { return resumed_; }
+  /// Finished generations held by the checkpoint on disk, written in full
+  /// (thread-safe: for a signal watcher). With background_checkpoint the last
+  /// generation's checkpoint may still be on its way.
+  int checkpointed_generations() const { return checkpoint_writer_->generations_written(); }
+  /// Waits for a checkpoint being written in the background; rethrows its failure.
+  void wait_for_checkpoint() { checkpoint_writer_->wait(); }
 
  private:
   void emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime);
   void save_checkpoint();
+  int generations_done() const;  ///< finished generations: what a checkpoint now would hold
   void publish_trajectory(const Genome& champion, int32_t generation, const EvalSummary& expected);
 
   RunConfig config_;
@@ -78,6 +103,7 @@ class Evolution {
   std::unique_ptr<Population> population_;
   std::optional<EventLogWriter> log_;
   std::unique_ptr<Bus> bus_;
+  std::unique_ptr<CheckpointWriter> checkpoint_writer_;
   int64_t evaluations_ = 0;
   double best_so_far_ = 0.0;
   uint64_t last_champion_hash_ = 0;  // content hash (id aside) of the last champion

@@ -9,6 +9,12 @@ PoolEvaluator::PoolEvaluator(int workers, const EvalParams& params, double job_t
       workers, [params](const Bytes& job) { return run_eval_job(job, params); }, p);
 }
 
+PoolEvaluator::PoolEvaluator(std::unique_ptr<Transport> transport, double job_timeout_s) {
+  PoolParams p;
+  p.job_timeout_s = job_timeout_s;
+  pool_ = std::make_unique<WorkerPool>(std::move(transport), p);
+}
+
 std::vector<EvalSummary> PoolEvaluator::evaluate(const std::vector<Genome>& genomes) {
   std::vector<Bytes> jobs;
   jobs.reserve(genomes.size());

@@ -14,11 +14,15 @@ class PoolEvaluator : public Evaluator {
   /// Forks `workers` processes that evaluate with `params`. Create it before any
   /// other thread starts (LCM) and before opening files the workers need not share.
   PoolEvaluator(int workers, const EvalParams& params, double job_timeout_s = 600.0);
+  /// Evaluates over a transport whose workers run run_eval_job with the run's
+  /// EvalParams themselves (an MpiTransport: its ranks get them at start()).
+  explicit PoolEvaluator(std::unique_ptr<Transport> transport, double job_timeout_s = 600.0);
   std::vector<EvalSummary> evaluate(const std::vector<Genome>& genomes) override;
   int parallelism() const override { return pool_->workers(); }
   const PoolStats& stats() const { return pool_->stats(); }
   /// The worker processes' ids (tests kill one on purpose).
   std::vector<int> worker_pids();
+  Transport& transport() { return pool_->transport(); }
 
  private:
   std::unique_ptr<WorkerPool> pool_;

@@ -1,0 +1,50 @@
+#pragma once
+// Ending a process cleanly when it is told to stop (SIGTERM, SIGINT, SIGHUP): under
+// mpirun, rank 0 gets SIGTERM when another rank dies or the job is cancelled, and
+// must leave at once with a line that says how to resume. A thread of its own waits
+// for those signals (sigwait), so nothing runs in a signal handler: the signals are
+// blocked in every other thread (block them before any thread starts, MPI's
+// included). On a signal it writes "<program>: stopped by signal N (name): <message>"
+// to stderr and ends the process (_exit(128 + N)) without writing anything else:
+// files written atomically (the checkpoint) are whole, the log is cut back to the
+// checkpoint on --resume.
+#include <atomic>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace robozoo {
+
+/// Blocks SIGTERM, SIGINT and SIGHUP in the calling thread, and so in every thread
+/// it starts afterwards. Throws std::system_error on failure.
+void block_stop_signals();
+/// Unblocks them in the calling thread (their default action applies again).
+void unblock_stop_signals();
+
+class StopWatcher {
+ public:
+  /// Starts the waiting thread; call block_stop_signals() first (std::logic_error if not).
+  explicit StopWatcher(std::string program);
+  /// Stops the thread and unblocks the signals in the calling thread: a signal
+  /// that arrives afterwards has its default action.
+  ~StopWatcher();
+  StopWatcher(const StopWatcher&) = delete;
+  StopWatcher& operator=(const StopWatcher&) = delete;
+
+  /// What to say after "stopped by signal N (name): " (thread-safe).
+  void set_message(const std::string& message);
+  /// The same, made when the signal comes (on the watcher's thread, so `source`
+  /// must be thread-safe and valid until replaced); empty: say nothing more.
+  void set_message_source(std::function<std::string()> source);
+
+ private:
+  void watch();
+  std::string program_;
+  std::mutex mutex_;
+  std::function<std::string()> source_;
+  std::atomic<bool> stopping_{false};
+  std::thread thread_;
+};
+
+}  // namespace robozoo
