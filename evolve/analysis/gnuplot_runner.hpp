@@ -9,8 +9,9 @@ namespace robozoo {
 /// has the pngcairo terminal.
 bool gnuplot_available(const std::string& gnuplot = "gnuplot");
 
-/// Runs `gnuplot script_path`; throws std::runtime_error with gnuplot's own
-/// messages when it cannot be started or exits with an error.
-void run_gnuplot(const std::string& script_path, const std::string& gnuplot = "gnuplot");
+/// Runs `gnuplot script_path` in the folder `cwd` (empty: the current one; a
+/// relative script path is read from there); throws std::runtime_error with
+/// gnuplot's own messages when it cannot be started or exits with an error.
+void run_gnuplot(const std::string& script_path, const std::string& gnuplot = "gnuplot", const std::string& cwd = "");
 
 }  // namespace robozoo

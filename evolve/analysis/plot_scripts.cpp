@@ -81,14 +81,15 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
   }
   s << "set multiplot layout " << rows << "," << columns << " title " << gnuplot_quote(title) << "\n"
     << "set style fill solid 1.0 border rgb \"black\"\nset boxwidth 0.6\nset xrange [-0.6:1.6]\n"
-    << "set xtics (\"feed-forward\" 0, \"recurrent\" 1) scale 0\nset grid ytics\nset key off\n";
+    << "set xtics (\"feed-forward\" 0, \"recurrent\" 1) scale 0\nset grid ytics\nset key off\n"
+    << "set offsets 0, 0, graph 0.1, 0\n";
   for (int i = 0; i < n; ++i) {
     const Comparison& c = comparisons[static_cast<size_t>(i)];
     std::string t = c.label;
     const std::string unit = c.unit == "share" && share_scale == 100.0 ? "%" : c.unit;
     if (!unit.empty() && unit != "count") t += " (" + unit + ")";
     t += "\nn = " + std::to_string(c.control.n) + " / " + std::to_string(c.experimental.n);
-    if (!std::isnan(c.test.p)) t += ", p = " + num(std::round(c.test.p * 1e4) / 1e4);
+    if (!std::isnan(c.test.p)) t += c.test.p < 1e-4 ? ", p < 0.0001" : ", p = " + num(std::round(c.test.p * 1e4) / 1e4);
     if (!c.stars.empty()) t += "  " + c.stars;
     const bool nonneg = (c.control.n == 0 || c.control.mean - c.control.se >= 0) &&
                         (c.experimental.n == 0 || c.experimental.mean - c.experimental.se >= 0);
@@ -96,7 +97,7 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
       << (nonneg ? "set yrange [0:*]\n" : "set autoscale y\n")
       << "plot $p" << i << " every ::0::0 using 1:2 with boxes lc rgb \"#ffffff\", \\\n"
       << "     $p" << i << " every ::1::1 using 1:2 with boxes lc rgb \"#d62728\", \\\n"
-      << "     $p" << i << " using 1:2:3 with yerrorbars lc rgb \"black\" pt -1\n";
+      << "     $p" << i << " using 1:2:3 with yerrorbars lc rgb \"black\" pt 7 ps 0\n";
   }
   s << "unset multiplot\nunset output\n";
   return s.str();

@@ -42,6 +42,7 @@ std::string agreement(const PaperClaim& claim, const Comparison& c) {
   const bool sig = c.test.p < 0.05;
   const double diff = c.experimental.mean - c.control.mean;
   if (claim.direction == 0) return sig ? "no: robozoo finds a significant difference" : "yes (no significant difference)";
+  if (diff == 0) return "no: no difference";
   const bool same_way = claim.direction > 0 ? diff > 0 : diff < 0;
   if (!same_way) return sig ? "no: significant, the other way" : "no: the other way, not significant";
   if (claim.significant && !sig) return "same direction, not significant";
