@@ -1,5 +1,6 @@
 #include "evolve/analysis/plot_scripts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -19,6 +20,29 @@ std::string num(double v) {
 std::string terminal(const std::string& png_path, const PlotStyle& style) {
   return "set terminal pngcairo enhanced size " + std::to_string(style.width) + "," + std::to_string(style.height) +
          " font " + gnuplot_quote(style.font) + "\nset output " + gnuplot_quote(png_path) + "\n";
+}
+
+// Breaks `text` at spaces into lines of at most about `width` characters.
+std::string wrap(const std::string& text, size_t width) {
+  std::string out, line, word;
+  auto flush_word = [&] {
+    if (word.empty()) return;
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    word.clear();
+  };
+  for (char c : text) {
+    if (c == ' ') {
+      flush_word();
+    } else {
+      word += c;
+    }
+  }
+  flush_word();
+  return out + line;
 }
 
 }  // namespace
@@ -88,6 +112,8 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
     std::string t = c.label;
     const std::string unit = c.unit == "share" && share_scale == 100.0 ? "%" : c.unit;
     if (!unit.empty() && unit != "count") t += " (" + unit + ")";
+    // About 7 pixels per character of the panel titles' font.
+    t = wrap(t, static_cast<size_t>(std::max(20, style.width / columns / 8)));
     t += "\nn = " + std::to_string(c.control.n) + " / " + std::to_string(c.experimental.n);
     if (!std::isnan(c.test.p)) t += c.test.p < 1e-4 ? ", p < 0.0001" : ", p = " + num(std::round(c.test.p * 1e4) / 1e4);
     if (!c.stars.empty()) t += "  " + c.stars;
@@ -97,7 +123,7 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
       << (nonneg ? "set yrange [0:*]\n" : "set autoscale y\n")
       << "plot $p" << i << " every ::0::0 using 1:2 with boxes lc rgb \"#ffffff\", \\\n"
       << "     $p" << i << " every ::1::1 using 1:2 with boxes lc rgb \"#d62728\", \\\n"
-      << "     $p" << i << " using 1:2:3 with yerrorbars lc rgb \"black\" pt 7 ps 0\n";
+      << "     $p" << i << " using 1:2:3 with yerrorbars lc rgb \"black\" pt 7 ps 0.5\n";
   }
   s << "unset multiplot\nunset output\n";
   return s.str();
