@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "evolve/analysis/csv_writer.hpp"
 #include "evolve/analysis/experiment_tables.hpp"
 #include "evolve/analysis/gnuplot_runner.hpp"
 #include "evolve/analysis/plot_scripts.hpp"
@@ -126,7 +127,7 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
       "Best-of-run robot: the champion with the highest fitness in a run (the earliest, among equals). Leaves: "
       "spheres other than the root with no child. Radius variance: within a robot, divided by the number of "
       "spheres. Depth: parent links from the root. A sphere touched the ground when its centre height minus its "
-      "radius was at most " + std::to_string(o.analysis.morphology.ground_epsilon) +
+      "radius was at most " + csv_number(o.analysis.morphology.ground_epsilon) +
       " m at some pose of the champion's logged pose stream (every k-th step of its simulation).");
   rep.notes.push_back(
       "CPPN links are the enabled link genes; a forward link lies on no directed cycle of the expressed network.");
@@ -189,7 +190,11 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     } else if (regime_logs.empty()) {
       z.note = "no run";
     } else if (!is_executable(render)) {
-      z.note = "robozoo-render is missing (looked for " + render + "), so no zoo sheet was made";
+      // A path inside the current folder is shown relative to it (the report may be committed).
+      std::error_code ec;
+      const fs::path rel = fs::relative(render, fs::current_path(), ec);
+      const std::string shown = !ec && !rel.empty() && rel.string().rfind("..", 0) != 0 ? rel.string() : render;
+      z.note = "robozoo-render is missing (looked for " + shown + "), so no zoo sheet was made";
     } else {
       const std::string png = "zoo-" + regime_file(r) + ".png";
       std::vector<std::string> argv = {render, "zoo"};
