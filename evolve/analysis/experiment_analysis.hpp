@@ -1,0 +1,58 @@
+#pragma once
+// The comparison of the two regimes over the runs of an experiment: the
+// paper's Figure 1 (mean best-so-far fitness per generation, +-1 standard
+// error), Figure 2 (body plans of the best-of-run robots), Figure 3 (their
+// CPPNs) and the champion-change analysis of section 4, each statistic with
+// Student's two-sample t-test (ttest.hpp) between the regimes.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "evolve/analysis/run_analysis.hpp"
+#include "evolve/analysis/sample_stats.hpp"
+#include "evolve/analysis/ttest.hpp"
+
+namespace robozoo {
+
+/// One statistic compared between the control (feed-forward) and the
+/// experimental (recurrent) regime.
+struct Comparison {
+  std::string key;        ///< short name (CSV column, plot file)
+  std::string label;      ///< what it is, for people
+  std::string unit;       ///< unit of the values
+  SampleStats control;    ///< feed-forward sample
+  SampleStats experimental;  ///< recurrent sample
+  TTestResult test;       ///< control against experimental
+  std::string stars;      ///< significance_stars(test.p)
+};
+
+/// Builds a comparison of two samples.
+Comparison compare(const std::string& key, const std::string& label, const std::string& unit,
+                   const std::vector<double>& control, const std::vector<double>& experimental);
+
+struct CurvePoint {
+  int32_t generation = 0;
+  SampleStats control;       ///< best-so-far fitness over the feed-forward runs that reached this generation
+  SampleStats experimental;  ///< the same over the recurrent runs
+};
+
+struct ExperimentAnalysis {
+  std::vector<RunAnalysis> control;       ///< feed-forward runs, by seed
+  std::vector<RunAnalysis> experimental;  ///< recurrent runs, by seed
+  std::vector<CurvePoint> fitness_curve;  ///< Figure 1
+  std::vector<Comparison> fitness;        ///< best-of-run fitness
+  std::vector<Comparison> morphology;     ///< Figure 2
+  std::vector<Comparison> genotype;       ///< Figure 3
+  std::vector<Comparison> champion;       ///< section 4
+  /// Best-of-run robots without a pose stream (ground statistics counted as 0), per regime (count).
+  int32_t control_without_poses = 0, experimental_without_poses = 0;
+};
+
+/// Compares the regimes over `runs` (runs without a best-of-run robot count
+/// in the fitness curve and fitness, not in the robot statistics).
+ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs);
+
+/// The comparison with `key` in `list`, or nullptr.
+const Comparison* find_comparison(const std::vector<Comparison>& list, const std::string& key);
+
+}  // namespace robozoo

@@ -1,0 +1,34 @@
+#pragma once
+// gnuplot scripts for the experiment's figures. Each script holds its data
+// (gnuplot datablocks), so it can be re-run or edited by hand next to its PNG.
+// Colours follow the paper: control (feed-forward) blue lines / white bars,
+// experimental (recurrent) red.
+#include <string>
+#include <vector>
+
+#include "evolve/analysis/experiment_analysis.hpp"
+
+namespace robozoo {
+
+struct PlotStyle {
+  int width = 1200;   ///< image width (pixels)
+  int height = 800;   ///< image height (pixels)
+  std::string font = "DejaVu Sans,11";  ///< pngcairo font
+};
+
+/// Figure 1: mean best-so-far fitness per generation of each regime, with +-1
+/// standard error as dotted lines around a shaded band.
+std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std::string& png_path,
+                                 const std::string& title, const PlotStyle& style = {});
+
+/// One bar panel per comparison (mean +- 1 standard error of each regime),
+/// the paper's asterisks in the panel's title; `scale` multiplies the values of
+/// comparisons whose unit is "share" (100 shows them in per cent).
+std::string comparison_panels_script(const std::vector<Comparison>& comparisons, const std::string& png_path,
+                                     const std::string& title, int columns, const PlotStyle& style = {},
+                                     double share_scale = 100.0);
+
+/// Escapes a string for a double-quoted gnuplot string literal.
+std::string gnuplot_quote(const std::string& s);
+
+}  // namespace robozoo

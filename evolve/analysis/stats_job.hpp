@@ -1,0 +1,44 @@
+#pragma once
+// What robozoo-stats does with a folder of logs: reads every run (one at a
+// time), compares the regimes, and writes the CSV tables, the gnuplot scripts
+// and PNG plots, the zoo sheets (with robozoo-render, when it is there) and the
+// Markdown report into the output folder.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "evolve/analysis/experiment_analysis.hpp"
+#include "evolve/analysis/run_analysis.hpp"
+
+namespace robozoo {
+
+struct StatsOptions {
+  std::string log_dir;               ///< folder of the runs' logs (*.lcmlog)
+  std::string out_dir;               ///< where the tables, plots and report go (empty: <log_dir>/stats)
+  bool include_unfinished = false;   ///< also use runs whose log lacks generations (default: skip them)
+  AnalysisParams analysis;           ///< ground tolerance, topology, which champion changes count
+  bool plots = true;                 ///< run gnuplot
+  std::string gnuplot = "gnuplot";   ///< the gnuplot program
+  bool zoo = true;                   ///< make zoo sheets with robozoo-render
+  std::string render;                ///< the robozoo-render program (empty: next to the running program)
+  std::string title = "robozoo: recurrent vs feed-forward CPPNs";
+  std::vector<std::string> notes;    ///< paragraphs for the top of the report
+};
+
+struct StatsOutcome {
+  ExperimentAnalysis analysis;
+  std::vector<std::string> skipped;  ///< logs left out, with why
+  std::vector<std::string> files;    ///< files written, in the output folder
+  std::string out_dir;
+};
+
+/// The logs (*.lcmlog) directly in `dir`, sorted by name. Throws
+/// std::invalid_argument when `dir` is not a folder.
+std::vector<std::string> list_logs(const std::string& dir);
+
+/// Runs the whole job, telling `progress` what it does. Throws
+/// std::invalid_argument when there is no usable log, std::runtime_error when an
+/// output cannot be written or gnuplot fails.
+StatsOutcome run_stats(const StatsOptions& options, std::ostream& progress);
+
+}  // namespace robozoo

@@ -1,0 +1,73 @@
+// The figures' gnuplot scripts, run through the real gnuplot (gnuplot-nox,
+// installed by tools/setup.sh) into PNG files.
+#include "evolve/analysis/plot_scripts.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "evolve/analysis/gnuplot_runner.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo {
+namespace {
+
+using namespace robozoo::testing;
+
+std::vector<CurvePoint> curve() {
+  std::vector<CurvePoint> c;
+  for (int g = 0; g < 5; ++g)
+    c.push_back({g, describe({10.0 + g, 12.0 + g}), describe({11.0 + 2 * g, 13.0 + 2 * g, 12.0 + 2 * g})});
+  return c;
+}
+
+bool is_png(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  char magic[8] = {};
+  f.read(magic, 8);
+  return f.gcount() == 8 && std::string(magic + 1, 3) == "PNG";
+}
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+TEST(PlotScripts, FitnessCurveHoldsItsDataAndRendersAPng) {
+  const std::string s = fitness_curve_script(curve(), "fig1.png", "Figure 1");
+  EXPECT_NE(s.find("set terminal pngcairo"), std::string::npos);
+  EXPECT_NE(s.find("set output \"fig1.png\""), std::string::npos);
+  EXPECT_NE(s.find("4 15 1 20 0.5773502692"), std::string::npos);  // generation 4: {14, 16} and {19, 21, 20}: means 15, 20; s.e. 1, 1/sqrt(3)
+  TempDir dir;
+  write(dir / "fig1.gp", s);
+  ASSERT_TRUE(gnuplot_available());
+  run_gnuplot("fig1.gp", "gnuplot", dir.path);
+  EXPECT_TRUE(is_png(dir / "fig1.png"));
+}
+
+TEST(PlotScripts, BarPanelsWithStarsAndEmptySamples) {
+  std::vector<Comparison> list = {
+      compare("joints", "joints", "count", {1, 2, 3, 2}, {6, 7, 8, 7}),
+      compare("share", "a share", "share", {0.5, 0.25}, {1, 0.75}),
+      compare("empty", "no data", "count", {}, {}),
+  };
+  const std::string s = comparison_panels_script(list, "bars.png", "Figure 2", 2);
+  EXPECT_NE(s.find("set multiplot layout 2,2"), std::string::npos);
+  EXPECT_NE(s.find("***"), std::string::npos);       // joints differ strongly
+  EXPECT_NE(s.find("1 87.5 "), std::string::npos);  // the share in per cent
+  TempDir dir;
+  write(dir / "bars.gp", s);
+  run_gnuplot("bars.gp", "gnuplot", dir.path);
+  EXPECT_TRUE(is_png(dir / "bars.png"));
+}
+
+TEST(PlotScripts, GnuplotErrorsAreReported) {
+  TempDir dir;
+  write(dir / "bad.gp", "plot $nothing using 1:2\n");
+  EXPECT_THROW(run_gnuplot("bad.gp", "gnuplot", dir.path), std::runtime_error);
+  EXPECT_THROW(run_gnuplot("x.gp", "/nonexistent/gnuplot", dir.path), std::runtime_error);
+  EXPECT_FALSE(gnuplot_available("/nonexistent/gnuplot"));
+  EXPECT_THROW(fitness_curve_script({}, "x.png", "t"), std::invalid_argument);
+}
+
+TEST(PlotScripts, Quoting) { EXPECT_EQ(gnuplot_quote("a \"b\"\\\nc"), "\"a \\\"b\\\"\\\\\\nc\""); }
+
+}  // namespace
+}  // namespace robozoo

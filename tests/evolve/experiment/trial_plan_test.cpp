@@ -1,0 +1,71 @@
+#include "evolve/experiment/trial_plan.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace robozoo {
+namespace {
+
+ExperimentParams small() {
+  ExperimentParams p;
+  p.trials = 2;
+  p.generations = 3;
+  p.population = 12;
+  p.steps = 200;
+  p.workers = 2;
+  p.out_dir = "/tmp/x";
+  return p;
+}
+
+bool has(const std::vector<std::string>& v, const std::vector<std::string>& seq) {
+  return std::search(v.begin(), v.end(), seq.begin(), seq.end()) != v.end();
+}
+
+TEST(TrialPlan, SeedBySeedBothRegimes) {
+  const auto t = plan_trials(small());
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[0].name(), "feedforward-s1");
+  EXPECT_EQ(t[1].name(), "recurrent-s1");
+  EXPECT_EQ(t[2].name(), "feedforward-s2");
+  EXPECT_EQ(t[3].name(), "recurrent-s2");
+  EXPECT_EQ(t[3].log_path, "/tmp/x/recurrent-s2.lcmlog");
+  EXPECT_EQ(t[3].output_path, "/tmp/x/recurrent-s2.out");
+}
+
+TEST(TrialPlan, EvolveArgumentsCarryTheSizesAlsoOnResume) {
+  const ExperimentParams p = small();
+  const Trial t = plan_trials(p)[1];
+  for (bool resume : {false, true}) {
+    const auto a = evolve_arguments(t, p, resume);
+    EXPECT_TRUE(has(a, {"--log", "/tmp/x/recurrent-s1.lcmlog"}));
+    EXPECT_TRUE(has(a, {"--regime", "recurrent"}));
+    EXPECT_TRUE(has(a, {"--seed", "1"}));
+    EXPECT_TRUE(has(a, {"--population", "12"}));
+    EXPECT_TRUE(has(a, {"--generations", "3"}));
+    EXPECT_TRUE(has(a, {"--steps", "200"}));
+    EXPECT_TRUE(has(a, {"--workers", "2"}));
+    EXPECT_EQ(std::count(a.begin(), a.end(), "--resume"), resume ? 1 : 0);
+  }
+  ExperimentParams defaults = p;
+  defaults.steps = 0;
+  defaults.workers = 0;
+  const auto a = evolve_arguments(t, defaults, false);
+  EXPECT_EQ(std::count(a.begin(), a.end(), "--steps"), 0);
+  EXPECT_EQ(std::count(a.begin(), a.end(), "--workers"), 0);
+}
+
+TEST(TrialPlan, BadSizesAreRefused) {
+  ExperimentParams p = small();
+  p.trials = 0;
+  EXPECT_THROW(plan_trials(p), std::invalid_argument);
+  p = small();
+  p.population = 1;
+  EXPECT_THROW(validate_experiment(p), std::invalid_argument);
+  p = small();
+  p.out_dir.clear();
+  EXPECT_THROW(validate_experiment(p), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace robozoo

@@ -1,0 +1,169 @@
+// robozoo-stats on hand-made logs with known champions: the tables come out as
+// worked out by hand (tests/evolve/analysis/hand_made_experiment.hpp), gnuplot
+// makes the PNGs, robozoo-render is called for the zoo sheets when it exists
+// and the report says so when it does not.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "evolve/analysis/ttest.hpp"
+#include "tests/evolve/analysis/hand_made_experiment.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo {
+namespace {
+
+using namespace robozoo::testing;
+
+// A CSV file as rows of fields (quoted fields allowed), keyed by the first column.
+std::map<std::string, std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::istringstream in(read_file(path));
+  std::string line;
+  std::vector<std::string> header;
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> f(1);
+    bool q = false;
+    for (size_t i = 0; i < l.size(); ++i) {
+      const char c = l[i];
+      if (q && c == '"' && i + 1 < l.size() && l[i + 1] == '"') {
+        f.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        q = !q;
+      } else if (c == ',' && !q) {
+        f.emplace_back();
+      } else {
+        f.back() += c;
+      }
+    }
+    return f;
+  };
+  while (std::getline(in, line)) {
+    const auto f = split(line);
+    if (header.empty()) {
+      header = f;
+      continue;
+    }
+    for (size_t i = 0; i < f.size() && i < header.size(); ++i) rows[f[0]][header[i]] = f[i];
+  }
+  return rows;
+}
+
+double num(const std::string& s) { return std::stod(s); }
+
+std::string stats(const std::string& args) { return bin("robozoo-stats") + " " + args; }
+
+TEST(StatsCli, HandMadeLogsGiveTheStatisticsWorkedOutByHand) {
+  TempDir dir;
+  write_hand_made_experiment(dir.path);
+  const auto o = run_shell(stats("'" + dir.path + "' --render /nonexistent/robozoo-render"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  const std::string out = dir / "stats";
+
+  const auto curve = read_csv(out + "/fitness_curve.csv");
+  EXPECT_DOUBLE_EQ(num(curve.at("0").at("feedforward_mean")), 9.5);
+  EXPECT_DOUBLE_EQ(num(curve.at("0").at("feedforward_se")), 5.5);
+  EXPECT_DOUBLE_EQ(num(curve.at("2").at("recurrent_mean")), 17.25);
+  EXPECT_EQ(curve.at("2").at("recurrent_n"), "2");
+
+  const auto morph = read_csv(out + "/morphology.csv");
+  EXPECT_DOUBLE_EQ(num(morph.at("spheres").at("feedforward_mean")), 3.0);
+  EXPECT_DOUBLE_EQ(num(morph.at("spheres").at("recurrent_mean")), 3.5);
+  EXPECT_DOUBLE_EQ(num(morph.at("leaves").at("feedforward_mean")), 1.5);
+  EXPECT_DOUBLE_EQ(num(morph.at("ground_fraction").at("recurrent_mean")), 0.625);
+
+  const auto geno = read_csv(out + "/genotype.csv");
+  EXPECT_DOUBLE_EQ(num(geno.at("forward_links").at("feedforward_mean")), 1.5);
+  EXPECT_DOUBLE_EQ(num(geno.at("forward_links").at("recurrent_mean")), 1.0);
+  EXPECT_DOUBLE_EQ(num(geno.at("links").at("recurrent_mean")), 2.5);
+
+  const auto champ = read_csv(out + "/champion_changes.csv");
+  const auto& share = champ.at("topology_changed");
+  EXPECT_DOUBLE_EQ(num(share.at("feedforward_mean")), 0.5);
+  EXPECT_DOUBLE_EQ(num(share.at("recurrent_mean")), 0.75);
+  EXPECT_EQ(share.at("df"), "4");
+  // The p-value column is the t-test of the pooled indicators {0, 1} and {1, 1, 1, 0}.
+  EXPECT_NEAR(num(share.at("p")), ttest_ind({0, 1}, {1, 1, 1, 0}).p, 1e-9);
+  EXPECT_NEAR(num(champ.at("improvement_changed").at("recurrent_mean")), 3.5 / 3.0, 1e-9);
+  EXPECT_EQ(champ.at("improvement_same").at("p"), "nan");
+
+  const auto runs = read_csv(out + "/runs.csv");
+  ASSERT_EQ(runs.size(), 4u);
+  const auto events = read_file(out + "/champion_change_events.csv");
+  EXPECT_EQ(std::count(events.begin(), events.end(), '\n'), 1 + 2 + 4);  // header, 2 + 4 new champions
+
+  for (const char* png : {"fig1_fitness.png", "fig2_morphology.png", "fig3_genotype.png", "champion_changes.png"}) {
+    struct stat st {};
+    EXPECT_EQ(::stat((out + "/" + png).c_str(), &st), 0) << png;
+    EXPECT_GT(st.st_size, 5000) << png;
+  }
+  const std::string report = read_file(out + "/report.md");
+  EXPECT_NE(report.find("96.99 % (recurrent) vs 59.92 % (feed-forward)"), std::string::npos);
+  EXPECT_NE(report.find("| 50.00 ± 50.00 % | 75.00 ± 25.00 % |"), std::string::npos) << report;
+  EXPECT_NE(report.find("robozoo-render is missing (looked for /nonexistent/robozoo-render)"), std::string::npos);
+  EXPECT_NE(report.find("![Figure 2](fig2_morphology.png)"), std::string::npos);
+  EXPECT_NE(report.find("1 feed-forward, 0 recurrent"), std::string::npos);  // best-of-run without poses
+  EXPECT_NE(report.find("robozoo-experiment --trials 2 --generations 3 --population 10 --out"), std::string::npos);
+}
+
+TEST(StatsCli, CallsRobozooRenderForEachRegimesZooSheet) {
+  TempDir dir;
+  write_hand_made_experiment(dir.path);
+  // A stand-in robozoo-render that records its arguments and writes the -o file.
+  const std::string render = dir / "fake-render";
+  std::ofstream(render) << "#!/bin/sh\necho \"$@\" >> '" << (dir / "render-calls") << "'\n"
+                        << "while [ $# -gt 0 ]; do if [ \"$1\" = -o ]; then echo png > \"$2\"; fi; shift; done\n";
+  ::chmod(render.c_str(), 0755);
+  const auto o = run_shell(stats("'" + dir.path + "' -o '" + (dir / "out") + "' --no-plots --render '" + render + "'"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  const std::string calls = read_file(dir / "render-calls");
+  EXPECT_NE(calls.find("zoo " + dir.path + "/feedforward-s1.lcmlog " + dir.path + "/feedforward-s2.lcmlog -o " +
+                       (dir / "out/zoo-feedforward.png") + " --best-of-run"),
+            std::string::npos)
+      << calls;
+  EXPECT_NE(calls.find("recurrent-s2.lcmlog -o " + (dir / "out/zoo-recurrent.png") + " --best-of-run"),
+            std::string::npos);
+  const std::string report = read_file(dir / "out/report.md");
+  EXPECT_NE(report.find("![recurrent zoo](zoo-recurrent.png)"), std::string::npos);
+  EXPECT_FALSE(file_exists(dir / "out/fig1_fitness.png"));  // --no-plots
+}
+
+TEST(StatsCli, UnfinishedRunsAreLeftOutUnlessAskedFor) {
+  TempDir dir;
+  write_hand_made_experiment(dir.path);
+  HandRun unfinished = hand_made_experiment()[2];
+  unfinished.seed = 9;
+  unfinished.generations_requested = 10;
+  write_hand_log(dir / "recurrent-s9.lcmlog", unfinished);
+  std::ofstream(dir / "notes.txt") << "not a log";
+  std::ofstream(dir / "broken.lcmlog") << "garbage";
+
+  auto o = run_shell(stats("'" + dir.path + "' --no-plots --no-zoo"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  auto runs = read_csv(dir / "stats/runs.csv");
+  EXPECT_EQ(runs.size(), 4u);
+  std::string report = read_file(dir / "stats/report.md");
+  EXPECT_NE(report.find("Left out: recurrent-s9.lcmlog: unfinished (3 of 10 generations)"), std::string::npos) << report;
+  EXPECT_NE(report.find("Left out: broken.lcmlog"), std::string::npos);
+
+  o = run_shell(stats("'" + dir.path + "' --no-plots --no-zoo --include-unfinished"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  runs = read_csv(dir / "stats/runs.csv");
+  EXPECT_EQ(runs.size(), 5u);
+}
+
+TEST(StatsCli, NoLogsIsAnError) {
+  TempDir dir;
+  const auto o = run_shell(stats("'" + dir.path + "'"));
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.output.find("no *.lcmlog in"), std::string::npos);
+  EXPECT_EQ(run_shell(stats("/nonexistent/folder")).status, 2);
+}
+
+}  // namespace
+}  // namespace robozoo

@@ -1,0 +1,218 @@
+// robozoo-experiment: the paper's experiment (issue 7). Runs N seeds of each
+// regime (feed-forward and recurrent CPPNs) with robozoo-evolve, one log per
+// trial in --out, one trial after the other. It can be stopped (Ctrl-C, SIGTERM)
+// and started again at any time: finished trials are skipped, a stopped one is
+// resumed from its checkpoint, the others are started. Prints progress across
+// the whole experiment with an estimated finish time. Then: robozoo-stats DIR.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+
+#include <csignal>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "evolve/config/run_config.hpp"
+#include "evolve/experiment/child_process.hpp"
+#include "evolve/experiment/program_path.hpp"
+#include "evolve/experiment/progress_estimate.hpp"
+#include "evolve/experiment/trial_plan.hpp"
+#include "evolve/experiment/trial_status.hpp"
+
+using namespace robozoo;
+
+namespace {
+
+struct Experiment {
+  ExperimentParams params;
+  std::vector<Trial> trials;
+  std::vector<TrialStatus> status;
+
+  ProgressTotals totals() const {
+    ProgressTotals t;
+    t.generations_total = static_cast<int64_t>(trials.size()) * params.generations;
+    for (const auto& s : status) {
+      t.generations_done += s.generations_done;
+      t.seconds_spent += s.elapsed_seconds;
+    }
+    return t;
+  }
+};
+
+std::string progress_line(const Experiment& e, size_t current) {
+  const ProgressTotals t = e.totals();
+  const ProgressEstimate est = estimate_progress(t);
+  std::ostringstream s;
+  char pct[32];
+  std::snprintf(pct, sizeof pct, "%5.1f%%", 100.0 * est.fraction);
+  s << "experiment " << pct << " (" << t.generations_done << "/" << t.generations_total << " generations)  trial "
+    << current + 1 << "/" << e.trials.size() << " " << e.trials[current].name() << " gen "
+    << e.status[current].generations_done << "/" << e.params.generations << "  spent "
+    << format_duration(t.seconds_spent);
+  if (est.known && t.generations_done < t.generations_total) {
+    const std::time_t now = std::time(nullptr);
+    s << "  remaining ~" << format_duration(est.remaining_seconds) << "  finish ~"
+      << format_clock(now + static_cast<std::time_t>(est.remaining_seconds), now);
+  } else if (!est.known) {
+    s << "  remaining: estimated after the first generation";
+  }
+  return s.str();
+}
+
+void print_status(const Experiment& e) {
+  std::cout << "trial                 state        generations  time\n";
+  for (size_t i = 0; i < e.trials.size(); ++i) {
+    char line[200];
+    std::snprintf(line, sizeof line, "%-21s %-12s %5d/%-6d %s\n", e.trials[i].name().c_str(),
+                  state_name(e.status[i].state).c_str(), e.status[i].generations_done, e.params.generations,
+                  format_duration(e.status[i].elapsed_seconds).c_str());
+    std::cout << line;
+  }
+  const ProgressEstimate est = estimate_progress(e.totals());
+  std::cout << "experiment " << static_cast<int>(100.0 * est.fraction) << "% done";
+  if (est.known && est.fraction < 1.0) std::cout << ", about " << format_duration(est.remaining_seconds) << " left";
+  std::cout << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "robozoo-experiment: run the paper's experiment, --trials seeds (1..N) of each regime (feed-forward and\n"
+      "recurrent CPPNs) with robozoo-evolve, one log per trial in --out (<regime>-s<seed>.lcmlog). Stop it\n"
+      "at any time (Ctrl-C) and run the same command again: finished trials are skipped, a stopped one is\n"
+      "resumed, the others are started. The paper's sizes are the defaults (30 trials, population 150,\n"
+      "500 generations). Afterwards: robozoo-stats DIR."};
+  ExperimentParams p;
+  std::string evolve;
+  bool status_only = false;
+  double progress_interval = 5.0;
+  app.add_option("--out", p.out_dir, "folder of the experiment's logs (created if missing)")->required();
+  app.add_option("--trials", p.trials, "seeds per regime (paper: 30)")->check(CLI::Range(1, 100000));
+  app.add_option("--generations", p.generations, "generations per trial (paper: 500)")->check(CLI::Range(1, 1000000000));
+  app.add_option("--population", p.population, "genomes per generation (paper: 150)")->check(CLI::Range(2, 1000000));
+  app.add_option("--workers", p.workers, "robozoo-evolve worker processes per trial (default: one per core)")
+      ->check(CLI::Range(1, 4096));
+  app.add_option("--steps", p.steps, "physics steps per evaluation, passed to robozoo-evolve (default: its own, 2500)")
+      ->check(CLI::Range(1, 1000000000));
+  app.add_option("--evolve", evolve, "the robozoo-evolve program (default: the one next to this program)");
+  app.add_option("--progress-interval", progress_interval, "seconds between progress lines (at most one per generation)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--status", status_only, "print where each trial stands and exit");
+  CLI11_PARSE(app, argc, argv);
+
+  Experiment e;
+  e.params = p;
+  try {
+    e.trials = plan_trials(p);
+    for (const auto& t : e.trials) e.status.push_back(trial_status(t, p));
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+    return 2;
+  }
+  if (status_only) {
+    print_status(e);
+    return 0;
+  }
+  try {
+    if (evolve.empty()) evolve = program_dir() + "/robozoo-evolve";
+    std::filesystem::create_directories(p.out_dir);
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+    return 2;
+  }
+  if (!is_executable(evolve)) {
+    std::cerr << "robozoo-experiment: cannot run " << evolve << " (build robozoo-evolve, or give --evolve)\n";
+    return 2;
+  }
+
+  int finished = 0, partial = 0;
+  for (const auto& s : e.status) {
+    finished += s.state == TrialState::Finished;
+    partial += s.state == TrialState::Partial;
+  }
+  std::cerr << "robozoo-experiment: " << e.trials.size() << " trials (" << p.trials << " per regime), population "
+            << p.population << ", " << p.generations << " generations"
+            << (p.steps > 0 ? ", " + std::to_string(p.steps) + " steps" : std::string()) << ", "
+            << (p.workers > 0 ? std::to_string(p.workers) : std::string("all")) << " workers, in " << p.out_dir
+            << "\n  " << finished << " finished (skipped), " << partial << " to resume, "
+            << e.trials.size() - static_cast<size_t>(finished + partial) << " to start" << std::endl;
+
+  SignalBlock block;
+  for (size_t i = 0; i < e.trials.size(); ++i) {
+    const Trial& t = e.trials[i];
+    if (e.status[i].state == TrialState::Finished) continue;
+    const bool resume = e.status[i].state == TrialState::Partial;
+    std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": "
+              << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done)
+                         : std::string("starting"))
+              << " (log " << t.log_path << ")" << std::endl;
+    std::vector<std::string> args = {evolve};
+    for (auto& a : evolve_arguments(t, p, resume)) args.push_back(a);
+    pid_t pid;
+    try {
+      pid = spawn_child(args, t.output_path);
+    } catch (const std::exception& ex) {
+      std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+      return 1;
+    }
+    const std::string cp = t.log_path + ".checkpoint";
+    std::filesystem::file_time_type seen{};
+    auto last_line = std::chrono::steady_clock::now() - std::chrono::hours(1);
+    int32_t last_gen = e.status[i].generations_done;
+    for (;;) {
+      const ChildEvent ev = wait_child(block, pid, 1.0);
+      if (ev.kind == ChildEvent::Signalled) {
+        std::cerr << "\nrobozoo-experiment: " << strsignal(ev.signal) << ": stopping " << t.name() << " ..."
+                  << std::endl;
+        stop_child(pid);
+        try {
+          e.status[i] = trial_status(t, p);
+        } catch (const std::exception&) {
+        }
+        std::cerr << "robozoo-experiment: stopped; " << t.name() << " kept "
+                  << e.status[i].generations_done << " finished generations. Run the same command again to resume."
+                  << std::endl;
+        return 128 + ev.signal;
+      }
+      if (ev.kind == ChildEvent::Exited) {
+        try {
+          e.status[i] = trial_status(t, p);
+        } catch (const std::exception& ex) {
+          std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+          return 1;
+        }
+        if (ev.status != 0 || e.status[i].state != TrialState::Finished) {
+          std::cerr << "robozoo-experiment: robozoo-evolve failed on " << t.name() << " (exit status " << ev.status
+                    << "); its messages are in " << t.output_path << "\n";
+          return 1;
+        }
+        std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": finished ("
+                  << format_duration(e.status[i].elapsed_seconds) << ")\n  " << progress_line(e, i) << std::endl;
+        break;
+      }
+      // Timeout: look at the checkpoint when it changed.
+      std::error_code ec;
+      const auto mtime = std::filesystem::last_write_time(cp, ec);
+      if (ec || mtime == seen) continue;
+      seen = mtime;
+      try {
+        e.status[i] = trial_status(t, p);
+      } catch (const std::exception&) {
+        continue;  // being replaced right now; the next look will do
+      }
+      const auto now = std::chrono::steady_clock::now();
+      if (e.status[i].generations_done != last_gen &&
+          std::chrono::duration<double>(now - last_line).count() >= progress_interval) {
+        last_gen = e.status[i].generations_done;
+        last_line = now;
+        std::cerr << "  " << progress_line(e, i) << std::endl;
+      }
+    }
+  }
+  std::cerr << "robozoo-experiment: all " << e.trials.size() << " trials finished (robozoo-evolve time "
+            << format_duration(e.totals().seconds_spent) << "). Next: robozoo-stats " << p.out_dir << std::endl;
+  return 0;
+}

@@ -1,0 +1,61 @@
+// robozoo-stats: the paper's figures from a folder of robozoo-evolve logs
+// (issue 7): Figure 1 (mean best-so-far fitness per generation, +-1 standard
+// error), Figure 2 (body plans of the best-of-run robots), Figure 3 (their
+// CPPNs), the champion-change analysis of section 4, Student's t-test for every
+// compared statistic, CSV tables, gnuplot PNGs, zoo sheets (robozoo-render) and
+// a Markdown report that puts each of the paper's claims beside robozoo's figure.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "evolve/analysis/stats_job.hpp"
+
+using namespace robozoo;
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "robozoo-stats: read every log (*.lcmlog) in DIR (e.g. a robozoo-experiment folder), compare the\n"
+      "feed-forward and recurrent regimes as the paper does (Figures 1-3, new champions of section 4, Student's\n"
+      "t-tests) and write CSV tables, gnuplot PNGs, zoo sheets and report.md into --out (default DIR/stats)."};
+  StatsOptions o;
+  bool no_plots = false, no_zoo = false;
+  app.add_option("DIR", o.log_dir, "folder of the runs' logs")->required();
+  app.add_option("--out,-o", o.out_dir, "output folder (default: DIR/stats)");
+  app.add_flag("--include-unfinished", o.include_unfinished,
+               "also use runs that did not reach their last generation (default: left out, and listed)");
+  app.add_option("--ground-epsilon", o.analysis.morphology.ground_epsilon,
+                 "a sphere touched the ground when centre z - radius <= this at a logged pose (m)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--topology-joints", o.analysis.changes.topology.joints,
+               "count a changed hinge joint as a change of topology (default: the sphere tree alone)");
+  bool all_changes = false;
+  app.add_flag("--all-champion-changes", all_changes,
+               "count every fitness gain as a new champion, also before the first simulated robot");
+  app.add_option("--gnuplot", o.gnuplot, "the gnuplot program");
+  app.add_flag("--no-plots", no_plots, "write the tables and the report without running gnuplot");
+  app.add_option("--render", o.render, "the robozoo-render program (default: the one next to this program)");
+  app.add_flag("--no-zoo", no_zoo, "do not make zoo sheets");
+  app.add_option("--title", o.title, "title of the report");
+  app.add_option("--note", o.notes, "a paragraph for the top of the report (repeatable)");
+  CLI11_PARSE(app, argc, argv);
+  o.plots = !no_plots;
+  o.zoo = !no_zoo;
+  o.analysis.changes.simulated_only = !all_changes;
+  try {
+    std::cerr << "robozoo-stats: reading " << o.log_dir << "\n";
+    const StatsOutcome r = run_stats(o, std::cerr);
+    std::cerr << "robozoo-stats: " << r.analysis.control.size() << " feed-forward and " << r.analysis.experimental.size()
+              << " recurrent runs";
+    if (!r.skipped.empty()) std::cerr << ", " << r.skipped.size() << " left out (listed in the report)";
+    std::cerr << "\n  wrote";
+    for (const auto& f : r.files) std::cerr << " " << f;
+    std::cerr << "\n  in " << r.out_dir << "\n";
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "robozoo-stats: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-stats: " << e.what() << "\n";
+    return 1;
+  }
+}
