@@ -9,6 +9,7 @@
 
 #include "evolve/config/run_config.hpp"
 #include "evolve/io/bus.hpp"
+#include "evolve/run/checkpoint.hpp"
 #include "evolve/run/evolution.hpp"
 #include "evolve/run/pool_evaluator.hpp"
 
@@ -84,6 +85,12 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
     opts.log_path = o.log_path.empty() ? "runs/" + id + ".lcmlog" : o.log_path;
     const auto parent = std::filesystem::path(opts.log_path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
+    if (o.resume && std::filesystem::exists(opts.log_path + ".checkpoint")) {
+      // A resumed run is the run in the checkpoint: its configuration, not the
+      // command line's, decides how the workers evaluate.
+      const Checkpoint c = read_checkpoint(opts.log_path + ".checkpoint");
+      config = config_from_json(c.config);
+    }
     if (!o.resume && std::filesystem::exists(opts.log_path + ".checkpoint") &&
         std::filesystem::exists(opts.log_path)) {
       // Refuse to silently overwrite a run that could be resumed.

@@ -124,6 +124,9 @@ ChildEvent wait_child(const SignalBlock& block, pid_t pid, double timeout_s) {
 }
 
 int stop_child(pid_t pid, double grace_s) {
+  // kill(-pid) signals the child's process group; pid <= 1 would make it every
+  // process (-1) or our own group (0).
+  if (pid <= 1) throw std::logic_error("stop_child: not a child process id: " + std::to_string(pid));
   int status = 0;
   if (reap(pid, status)) return status;
   ::kill(-pid, SIGTERM);

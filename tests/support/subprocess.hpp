@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -40,6 +42,10 @@ inline Outcome run_shell(const std::string& command) {
 /// Starts argv in the background (stdout/stderr to `log_file`); returns its pid.
 inline pid_t spawn(const std::vector<std::string>& argv, const std::string& log_file) {
   const pid_t pid = ::fork();
+  if (pid < 0) {
+    ADD_FAILURE() << "fork failed";
+    return -1;
+  }
   if (pid == 0) {
     const int fd = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
@@ -53,6 +59,18 @@ inline pid_t spawn(const std::vector<std::string>& argv, const std::string& log_
     ::_exit(127);
   }
   return pid;
+}
+
+/// kill(2) for one real process only. kill(-1, sig) signals every process the
+/// user may signal (as root: the whole machine, the test runner included), and
+/// kill(0, sig) the caller's own group: a lookup that found no process must never
+/// turn into either.
+inline bool kill_process(pid_t pid, int sig) {
+  if (pid <= 1) {
+    ADD_FAILURE() << "refusing to signal pid " << pid << " (no such process was found)";
+    return false;
+  }
+  return ::kill(pid, sig) == 0;
 }
 
 inline int wait_status(pid_t pid) {

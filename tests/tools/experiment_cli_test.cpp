@@ -93,7 +93,7 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
     ::usleep(5000);
   }
   ASSERT_TRUE(file_exists(rec_cp)) << read_file(dir / "driver1.txt");
-  ::kill(pid, SIGINT);
+  kill_process(pid, SIGINT);
   EXPECT_EQ(wait_status(pid), 128 + SIGINT);
   EXPECT_NE(read_file(dir / "driver1.txt").find("Run the same command again to resume"), std::string::npos);
   ASSERT_TRUE(read_checkpoint(ff_cp).finished);

@@ -59,14 +59,14 @@ TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {
   for (int delay_ms : {20, 300, 800}) {
     const pid_t pid = spawn(evolve_args(log, 2, {}, kLonger), dir / "out.txt");
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
-    ::kill(pid, SIGKILL);
+    kill_process(pid, SIGKILL);
     EXPECT_EQ(wait_status(pid), 128 + SIGKILL) << "the run ended before the kill at " << delay_ms << " ms";
     // Its workers die with it (they watch their parent); give them a moment.
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     if (file_exists(log + ".checkpoint")) {
       const pid_t again = spawn(evolve_args(log, 2, {"--resume"}, kLonger), dir / "out2.txt");
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
-      ::kill(again, SIGKILL);
+      kill_process(again, SIGKILL);
       wait_status(again);
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
@@ -76,6 +76,22 @@ TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {
     std::remove(log.c_str());
     std::remove((log + ".checkpoint").c_str());
   }
+}
+
+TEST(EvolveCli, ResumeUsesTheCheckpointsConfigurationNotTheCommandLines) {
+  // Killed early, then resumed with no size flags at all: the workers must
+  // evaluate with the run's own settings (--steps 1000 etc.), not the defaults.
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2, {}, kLonger), 0);
+  const std::string log = dir / "cut.lcmlog";
+  const pid_t pid = spawn(evolve_args(log, 2, {}, kLonger), dir / "out.txt");
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  kill_process(pid, SIGKILL);
+  wait_status(pid);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto o = run_shell(join({bin("robozoo-evolve"), "--log", log, "--resume", "--workers", "2", "--quiet"}));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "");
 }
 
 TEST(EvolveCli, ResumeOfAFinishedRunChangesNothing) {
@@ -105,7 +121,7 @@ TEST(EvolveCli, WorkerKilledOnPurposeChangesNothing) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     const auto kids = children_of(pid);
     if (kids.size() == 2 && i % 3 == 2) {
-      ::kill(kids[killed % 2], SIGKILL);
+      kill_process(kids[killed % 2], SIGKILL);
       ++killed;
     }
   }

@@ -81,7 +81,7 @@ TEST(EvolveMpi, RankKilledMidRunThenResumedLocally) {
   const Outcome o = interrupt(mpi_evolve_args(3, log, {}, kLonger), log, 2,
                               [&](pid_t mpirun) {
                                 victim = rank_pid(mpirun, 2);
-                                if (victim > 0) ::kill(victim, SIGKILL);
+                                kill_process(victim, SIGKILL);
                               },
                               dir / "out.txt");
   ASSERT_GT(victim, 0) << "rank 2 not found among mpirun's children\n" << o.output;
@@ -104,12 +104,12 @@ TEST(EvolveMpi, CancelledJobThenResumedOnOtherRankCounts) {
   const std::string log = dir / "cut.lcmlog";
   // As Slurm's scancel does: SIGTERM to mpirun, which stops every rank.
   const Outcome o = interrupt(mpi_evolve_args(3, log, {}, kLonger), log, 1,
-                              [](pid_t mpirun) { ::kill(mpirun, SIGTERM); }, dir / "out.txt");
+                              [](pid_t mpirun) { kill_process(mpirun, SIGTERM); }, dir / "out.txt");
   expect_resume_line(o, log);
   EXPECT_FALSE(read_checkpoint(log + ".checkpoint").finished);
   // Resume under 2 ranks, kill a worker rank again, finish under 4 ranks.
   const Outcome again = interrupt(mpi_evolve_args(2, log, {"--resume"}, kLonger), log, 4,
-                                  [](pid_t mpirun) { ::kill(rank_pid(mpirun, 1), SIGKILL); }, dir / "out2.txt");
+                                  [](pid_t mpirun) { kill_process(rank_pid(mpirun, 1), SIGKILL); }, dir / "out2.txt");
   expect_resume_line(again, log);
   const Outcome resumed = run_logged(mpi_evolve_args(4, log, {"--resume"}, kLonger));
   ASSERT_EQ(resumed.status, 0) << resumed.output;

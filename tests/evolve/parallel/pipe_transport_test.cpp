@@ -79,6 +79,7 @@ TEST(PipeTransport, ExceptionComesBackAsAFailedResult) {
 TEST(PipeTransport, KilledIdleWorkerIsReportedOnceAndRestarts) {
   PipeTransport t(2, reverse);
   const pid_t victim = t.pid(1);
+  ASSERT_GT(victim, 1);
   ASSERT_EQ(::kill(victim, SIGKILL), 0);
   const WorkerEvent e = next_event(t);
   EXPECT_EQ(e.kind, WorkerEvent::Kind::Died);
@@ -101,6 +102,7 @@ TEST(PipeTransport, SendingToADeadWorkerDoesNotRaiseSigpipe) {
   // SIGPIPE's default action would end this test process.
   ASSERT_NE(::signal(SIGPIPE, SIG_DFL), SIG_ERR);
   PipeTransport t(1, reverse);
+  ASSERT_GT(t.pid(0), 1);
   ASSERT_EQ(::kill(t.pid(0), SIGKILL), 0);
   // Let the kernel finish the child (its socket closes), without reaping it here.
   siginfo_t info{};
