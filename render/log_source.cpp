@@ -25,15 +25,26 @@ LoadedLog load_log(const std::string& path, const LoadOptions& options) {
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": cannot read the log: " + e.what());
   }
-  if (contents.truncated && !options.allow_truncated)
-    throw std::runtime_error(path + ": the log is truncated (it ends inside an event after " +
-                             std::to_string(contents.records.size()) +
-                             " complete events); pass --allow-truncated to use the complete events");
+  if (contents.records.empty())
+    throw std::runtime_error(path + ": no LCM events in " + std::to_string(st.st_size) +
+                             " bytes: not a robozoo-evolve log");
+  // Bytes the complete events account for (LCM event header: sync word,
+  // event number, timestamp, channel and data lengths = 28 bytes). Fewer than
+  // the file holds: it ends inside an event (or holds garbage LCM skipped).
+  int64_t accounted = 0;
+  for (const LogRecord& r : contents.records)
+    accounted += 28 + static_cast<int64_t>(r.channel.size()) + static_cast<int64_t>(r.data.size());
+  const bool truncated = contents.truncated || accounted < static_cast<int64_t>(st.st_size);
+  if (truncated && !options.allow_truncated)
+    throw std::runtime_error(path + ": the log is truncated or damaged (" +
+                             std::to_string(static_cast<int64_t>(st.st_size) - accounted) +
+                             " bytes are not complete events; " + std::to_string(contents.records.size()) +
+                             " events are); pass --allow-truncated to use the complete events");
   CollectorOptions co;
   co.keep_poses = options.keep_poses;
   LoadedLog log;
   log.path = path;
-  log.truncated = contents.truncated;
+  log.truncated = truncated;
   log.collector = std::make_unique<MessageCollector>(co);
   for (const LogRecord& r : contents.records) log.collector->ingest(r.channel, r.data.data(), r.data.size(), path);
   log.collector->close_open_streams();

@@ -8,6 +8,10 @@
 
 #include <CLI/CLI.hpp>
 
+extern "C" {
+#include <libavutil/log.h>
+}
+
 #include <ctime>
 #include <iostream>
 #include <stdexcept>
@@ -191,9 +195,7 @@ int run_video(const VideoCmdArgs& a) {
   Pick pick = picks.front();
   for (const Pick& p : picks)
     if (p.genome->genome.fitness > pick.genome->genome.fitness) pick = p;
-  GenomeRecord record = *pick.genome;
-  if (a.resimulate) record.poses.clear();
-  VideoSubject subject = make_video_subject(*pick.run, record);
+  VideoSubject subject = make_video_subject(*pick.run, *pick.genome, a.resimulate);
   const bool tty = ::isatty(2) && !a.quiet;
   ProgressBar bar("rendering", video_frame_count(subject.trajectory.end_time() - subject.trajectory.start_time(), o),
                   tty);
@@ -321,6 +323,8 @@ int main(int argc, char** argv) {
   bc->add_option("--frames", bench.frames, "frames timed")->capture_default_str()->check(CLI::Range(1, 100000));
   add_video_options(bc, bench.video);
 
+  // libx264 and the MP4 muxer report every file on stderr; keep errors only.
+  av_log_set_level(AV_LOG_ERROR);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

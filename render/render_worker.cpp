@@ -1,5 +1,6 @@
 #include "render/render_worker.hpp"
 
+#include <cstdio>
 #include <exception>
 #include <memory>
 
@@ -85,13 +86,18 @@ void RenderWorker::run() {
                                                   picture_options_.samples);
       if (job.is_video) {
         const VideoStats s = render_video(job.subject, video_options_, job.path, {}, stage.get());
-        line = "video " + job.path + " (" + std::to_string(s.frames) + " frames, generation " +
-               std::to_string(job.subject.card.generation) + ", fitness " + std::to_string(job.subject.card.fitness) + ")";
+        char buf[160];
+        std::snprintf(buf, sizeof buf, " (%d frames, generation %d, genome %lld, fitness %.3f)", s.frames,
+                      job.subject.card.generation, static_cast<long long>(job.subject.card.genome_id),
+                      job.subject.card.fitness);
+        line = "video " + job.path + buf;
       } else {
         if (!fonts) fonts = std::make_unique<Fonts>(Fonts::load(picture_options_.font_size, picture_options_.font_dir));
         write_png(job.path, render_card_with_caption(*stage, *fonts, job.card, picture_options_));
-        line = "picture " + job.path + " (generation " + std::to_string(job.card.generation) + ", genome " +
-               std::to_string(job.card.genome_id) + ", fitness " + std::to_string(job.card.fitness) + ")";
+        char buf[160];
+        std::snprintf(buf, sizeof buf, " (generation %d, genome %lld, fitness %.3f)", job.card.generation,
+                      static_cast<long long>(job.card.genome_id), job.card.fitness);
+        line = "picture " + job.path + buf;
       }
     } catch (const std::exception& e) {
       ok = false;

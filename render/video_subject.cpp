@@ -20,11 +20,15 @@ Eigen::Vector3d run_target(const run_t& run) {
   }
 }
 
-VideoSubject make_video_subject(const RunRecord& run, const GenomeRecord& genome) {
+VideoSubject make_video_subject(const RunRecord& run, const GenomeRecord& genome, bool resimulate) {
   VideoSubject s;
   s.card = make_card(run, genome);
   s.target = run_target(run.run);
   const size_t n = s.card.shape.size();
+  if (resimulate) {
+    s.trajectory = simulate_trajectory(run.run, genome.genome, genome.morphology);
+    return s;
+  }
   if (!genome.poses.empty()) {
     s.trajectory = trajectory_from_poses(genome.poses, n);
     return s;

@@ -15,6 +15,7 @@ Eigen::Vector3d run_target(const run_t& run);
 /// champions under fresh ids, and evolve logs a trajectory once); else the
 /// genome is re-simulated. Throws std::invalid_argument when the genome has
 /// no morphology, std::runtime_error when re-simulation cannot reproduce it.
-VideoSubject make_video_subject(const RunRecord& run, const GenomeRecord& genome);
+/// `resimulate`: ignore logged poses and re-simulate.
+VideoSubject make_video_subject(const RunRecord& run, const GenomeRecord& genome, bool resimulate = false);
 
 }  // namespace robozoo::render

@@ -15,15 +15,32 @@ const Rgb kMuted{88, 92, 102};
 
 int caption_height(const Fonts& f) { return 2 * f.regular.line_height() + 10; }
 
-/// Draws a caption centred under a cell whose left edge is x, top y, width w.
+/// `text` shortened with an ellipsis until it fits `width` pixels.
+std::string fit(Font& font, std::string text, int width) {
+  if (font.measure(text) <= width) return text;
+  const std::string dots = "\u2026";
+  while (!text.empty()) {
+    // Drop one UTF-8 character from the end.
+    size_t cut = text.size() - 1;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xc0) == 0x80) --cut;
+    text.erase(cut);
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    if (font.measure(text + dots) <= width) return text + dots;
+  }
+  return "";
+}
+
+/// Draws a caption centred under a cell whose left edge is x, top y, width w;
+/// lines too long for the cell are shortened.
 void draw_caption(Image& sheet, Fonts& fonts, const RobotCard& card, int x, int y, int w) {
   const std::vector<std::string> lines = card_caption(card);
   Font* faces[2] = {&fonts.bold, &fonts.regular};
   const Rgb colors[2] = {kInk, kMuted};
   int baseline = y + 4 + fonts.regular.ascender();
   for (size_t i = 0; i < lines.size() && i < 2; ++i) {
-    const int tw = faces[i]->measure(lines[i]);
-    faces[i]->draw(sheet, x + std::max(0, (w - tw) / 2), baseline, lines[i], colors[i]);
+    const std::string line = fit(*faces[i], lines[i], w - 4);
+    const int tw = faces[i]->measure(line);
+    faces[i]->draw(sheet, x + std::max(0, (w - tw) / 2), baseline, line, colors[i]);
     baseline += fonts.regular.line_height();
   }
 }
