@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "render/image.hpp"
 #include "render/text.hpp"
 
@@ -21,5 +23,11 @@ void draw_overlay(Image& frame, Fonts& fonts, const OverlayText& text, int margi
 
 /// A small colour key in the bottom-right corner: red = leaf, blue = other.
 void draw_legend(Image& frame, Font& font, Rgb leaf, Rgb inner, int margin);
+
+/// When the target is off screen: an arrow on the frame's edge pointing at it,
+/// labelled. `projected` is project_to_pixel's result (z < 0: behind the eye).
+/// Returns false (draws nothing) when the target is in view.
+bool draw_target_pointer(Image& frame, Font& font, const Eigen::Vector3d& projected, const std::string& label,
+                         Rgb color, int margin);
 
 }  // namespace robozoo::render

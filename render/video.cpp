@@ -15,7 +15,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 Eigen::Vector3d follow_point(const RobotShape& shape, const std::vector<Eigen::Vector3d>& centers) {
-  return volume_center(centers, shape.radius);
+  return shape.mass_center(centers);
 }
 }  // namespace
 
@@ -70,7 +70,8 @@ bool VideoFrames::next(Image& out, VideoStats* stats) {
   const double dt = options_.speed / options_.encoder.fps;  // simulated seconds per frame
   const double t = std::min(tr.end_time(), tr.start_time() + index_ * dt);
   const std::vector<Eigen::Vector3d> centers = tr.sample(t);
-  Eigen::Vector3d point = follow_point(subject_.card.shape, centers);
+  const Eigen::Vector3d com = follow_point(subject_.card.shape, centers);
+  Eigen::Vector3d point = com;
   point.z() = z_;  // follow across the ground, not up and down
   const Camera& cam = follow_->update(point, index_ == 0 ? 0.0 : dt);
 
@@ -97,12 +98,17 @@ bool VideoFrames::next(Image& out, VideoStats* stats) {
       time_line += buf;
     }
     text.lines.push_back(time_line);
+    std::snprintf(buf, sizeof buf, "centre of mass %.2f m from the target", (com - subject_.target).norm());
+    text.lines.push_back(buf);
     if (tr.resimulated) text.lines.push_back("re-simulated (no poses in the log)");
     const double span = tr.end_time() - tr.start_time();
     text.progress = span > 0 ? (t - tr.start_time()) / span : 1.0;
     const int margin = std::max(8, options_.encoder.height / 40);
     draw_overlay(out, *fonts_, text, margin);
     draw_legend(out, *legend_font_, stage_.scene().style().leaf, stage_.scene().style().inner, margin);
+    std::snprintf(buf, sizeof buf, "target %.1f m", (com - subject_.target).norm());
+    draw_target_pointer(out, *legend_font_, project_to_pixel(cam, out.width(), out.height(), subject_.target), buf,
+                        stage_.scene().style().target, margin);
   }
   if (stats) {
     stats->draw_seconds += std::chrono::duration<double>(t1 - t0).count();

@@ -26,5 +26,22 @@ TEST(Overlay, PanelInTheTopLeftLegendInTheBottomRight) {
   EXPECT_EQ(changed(blank, legend, 0, 0, 320, 180), 0);
 }
 
+TEST(Overlay, TargetPointerOnlyWhenTheTargetIsOffScreen) {
+  Fonts fonts = Fonts::load(14);
+  const Image blank(400, 300, {200, 200, 200});
+  Image in_view = blank;
+  EXPECT_FALSE(draw_target_pointer(in_view, fonts.regular, {200, 150, 5}, "target 3 m", {240, 176, 32}, 8));
+  EXPECT_EQ(in_view.bytes(), blank.bytes());
+  // Far to the right: the arrow sits on the right edge, vertically centred.
+  Image right = blank;
+  EXPECT_TRUE(draw_target_pointer(right, fonts.regular, {5000, 150, 5}, "target 9.0 m", {240, 176, 32}, 8));
+  EXPECT_GT(changed(blank, right, 300, 100, 400, 200), 100);
+  EXPECT_EQ(changed(blank, right, 0, 0, 150, 300), 0);
+  // Behind the eye, projected to the left: the arrow points right.
+  Image behind = blank;
+  EXPECT_TRUE(draw_target_pointer(behind, fonts.regular, {-100, 150, -2}, "target", {240, 176, 32}, 8));
+  EXPECT_GT(changed(blank, behind, 300, 100, 400, 200), 100);
+}
+
 }  // namespace
 }  // namespace robozoo::render

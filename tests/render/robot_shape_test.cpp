@@ -36,6 +36,18 @@ TEST(RobotShape, InconsistentMorphologyIsRejected) {
   EXPECT_THROW(shape_from_morphology(m), std::invalid_argument);
 }
 
+TEST(RobotShape, MassCentreWeighsByDensityAndVolume) {
+  morphology_t m = testing::known_robot();
+  const RobotShape s = shape_from_morphology(m);
+  EXPECT_NEAR(s.mass[0], 4.0 / 3.0 * M_PI * 0.25 * 0.25 * 0.25, 1e-12);
+  std::vector<Eigen::Vector3d> c = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
+  const double m0 = s.mass[0], m1 = s.mass[1], m2 = s.mass[2], m3 = s.mass[3];
+  EXPECT_NEAR(s.mass_center(c).x(), (m1 + 2 * m2 + 3 * m3) / (m0 + m1 + m2 + m3), 1e-12);
+  m.spheres[2].density = 10.0;  // a heavy leaf pulls it over
+  EXPECT_GT(shape_from_morphology(m).mass_center(c).x(), s.mass_center(c).x());
+  EXPECT_THROW(s.mass_center({{0, 0, 0}}), std::invalid_argument);
+}
+
 TEST(RobotShape, VolumeCentreWeighsBySize) {
   const Eigen::Vector3d c = volume_center({{0, 0, 0}, {3, 0, 0}}, {2.0, 1.0});
   EXPECT_NEAR(c.x(), 3.0 / 9.0, 1e-12);
