@@ -26,7 +26,8 @@ struct VideoOptions {
                                    ///< drawing time; the outlines already smooth the silhouettes
   bool overlay = true;             ///< run, generation, fitness and time over the picture
   bool grid = true;                ///< grid lines on the ground
-  ViewAngles angles{-62.0, 20.0, 30.0};  ///< the camera's direction
+  ViewAngles angles{-105.0, 22.0, 30.0};  ///< the camera's direction: from the side, a little behind, so
+                                         ///< a robot heading for the target (+x) moves to the right
   double zoom_out = 1.7;           ///< camera distance over the one that just frames the starting pose
   double follow_smoothing = 0.8;   ///< follow camera's time constant (simulated s)
   int font_size = 0;               ///< overlay text size (px); 0: height / 32

@@ -90,8 +90,9 @@ Image render_zoo(const std::vector<RobotCard>& cards, const ZooOptions& o) {
   const int height = o.gap + title_h + rows * (o.cell_height + cap + o.gap);
   Image sheet(width, height, kPaper);
   if (!o.title.empty()) {
-    const int tw = title_fonts.bold.measure(o.title);
-    title_fonts.bold.draw(sheet, std::max(o.gap, (width - tw) / 2), o.gap + title_fonts.bold.ascender(), o.title, kInk);
+    const std::string title = fit(title_fonts.bold, o.title, width - 2 * o.gap);
+    const int tw = title_fonts.bold.measure(title);
+    title_fonts.bold.draw(sheet, std::max(o.gap, (width - tw) / 2), o.gap + title_fonts.bold.ascender(), title, kInk);
   }
 
   std::vector<Camera> cameras;
