@@ -1,0 +1,37 @@
+#pragma once
+// Benchmark figures of robozoo-render: frames per second of drawing and of
+// encoding, and the time to make one champion's whole video.
+#include <ostream>
+#include <string>
+
+#include "render/video.hpp"
+
+namespace robozoo::render {
+
+struct BenchOptions {
+  std::string log;        ///< a robozoo-evolve log; its best champion is drawn
+  int frames = 100;       ///< frames timed for drawing and for encoding (count)
+  VideoOptions video;     ///< size, samples, encoder settings
+  std::string scratch;    ///< folder for the videos written; empty: /tmp
+};
+
+struct BenchFigures {
+  int width = 0, height = 0, samples = 0;
+  std::string renderer;          ///< GL_RENDERER
+  int spheres = 0;               ///< spheres of the robot drawn (count)
+  double draw_fps = 0;           ///< drawing + read-back (frames/s)
+  double overlay_fps = 0;        ///< text and panels alone (frames/s)
+  double encode_fps = 0;         ///< RGB->yuv420p + x264 + MP4 (frames/s)
+  int video_frames = 0;          ///< frames of the whole champion video (count)
+  int video_steps = 0;           ///< physics steps it shows (count)
+  double video_sim_seconds = 0;  ///< simulated time it shows (s)
+  double video_wall_seconds = 0; ///< wall time to make it (s)
+  bool resimulated = false;      ///< the trajectory had to be re-simulated
+  double resimulate_seconds = 0; ///< time spent re-simulating (s)
+};
+
+/// Runs the benchmark; throws like load_log and render_video.
+BenchFigures run_bench(const BenchOptions& options);
+void print(std::ostream& out, const BenchFigures& f);
+
+}  // namespace robozoo::render

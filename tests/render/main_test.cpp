@@ -1,0 +1,134 @@
+// robozoo-render as a user runs it: zoo sheets and videos from logs, and clear
+// errors with a non-zero exit for bad input.
+#include <fcntl.h>  // tests/support/subprocess.hpp uses open()
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "render/png_io.hpp"
+#include "tests/render/decode_video.hpp"
+#include "tests/render/fixtures.hpp"
+#include "tests/render/messages.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo::render {
+namespace {
+
+using namespace robozoo::testing;
+
+class RenderCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir;
+    render::testing::write_small_run(*dir_ / "run.lcmlog");
+    // A second run: another seed.
+    RunConfig c = render::testing::small_config();
+    c.seed = 8;
+    InProcessEvaluator ev(c.eval);
+    EvolveOptions o;
+    o.log_path = *dir_ / "run8.lcmlog";
+    Evolution(c, o, ev).run();
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static robozoo::testing::Outcome cli(const std::string& args) { return run_shell(bin("robozoo-render") + " " + args); }
+  static std::string path(const std::string& name) { return *dir_ / name; }
+  static TempDir* dir_;
+};
+TempDir* RenderCli::dir_ = nullptr;
+
+TEST_F(RenderCli, HelpListsTheSubcommands) {
+  const robozoo::testing::Outcome o = cli("--help");
+  EXPECT_EQ(o.status, 0);
+  for (const char* s : {"zoo", "video", "live", "bench"}) EXPECT_NE(o.output.find(s), std::string::npos) << s;
+  EXPECT_NE(cli("").status, 0);  // a subcommand is required
+}
+
+TEST_F(RenderCli, ZooOfOneLogAndOfSeveral) {
+  const robozoo::testing::Outcome one = cli("zoo " + path("run.lcmlog") + " --top 3 --cell 120x90 --columns 3 -o " + path("top.png"));
+  ASSERT_EQ(one.status, 0) << one.output;
+  const Image top = read_png(path("top.png"));
+  EXPECT_EQ(top.width(), 12 + 3 * (120 + 12));
+  const robozoo::testing::Outcome two = cli("zoo " + path("run.lcmlog") + " " + path("run8.lcmlog") + " --cell 120x90 -o " +
+                             path("best.png"));
+  ASSERT_EQ(two.status, 0) << two.output;
+  EXPECT_NE(two.output.find("2 robots"), std::string::npos) << two.output;  // best of each run
+  const robozoo::testing::Outcome gen = cli("zoo " + path("run.lcmlog") + " --generation 2 --cell 120x90 -o " + path("g2.png"));
+  ASSERT_EQ(gen.status, 0) << gen.output;
+  EXPECT_NE(gen.output.find("1 robots"), std::string::npos) << gen.output;
+}
+
+TEST_F(RenderCli, VideoOfTheChampion) {
+  const robozoo::testing::Outcome o = cli("video " + path("run.lcmlog") + " --size 160x90 --speed 8 -o " + path("c.mp4"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  const auto v = render::testing::decode_video(path("c.mp4"));
+  ASSERT_TRUE(v.ok) << v.error;
+  EXPECT_EQ(v.codec, "h264");
+  EXPECT_EQ(v.width, 160);
+  EXPECT_EQ(v.height, 90);
+  EXPECT_EQ(v.luma.size(), 13u);  // 4 s at x8 and 25 fps, plus the first frame
+  const robozoo::testing::Outcome re = cli("video " + path("run.lcmlog") + " --resimulate --size 160x90 --speed 8 -o " + path("r.mp4"));
+  ASSERT_EQ(re.status, 0) << re.output;
+  EXPECT_NE(re.output.find("re-simulated"), std::string::npos) << re.output;
+}
+
+TEST_F(RenderCli, MissingLog) {
+  for (const std::string cmd : {"zoo ", "video "}) {
+    const robozoo::testing::Outcome o = cli(cmd + path("nope.lcmlog") + " -o " + path("x.out"));
+    EXPECT_NE(o.status, 0);
+    EXPECT_NE(o.output.find("nope.lcmlog: no such log file"), std::string::npos) << o.output;
+  }
+}
+
+TEST_F(RenderCli, TruncatedLog) {
+  std::filesystem::copy_file(path("run.lcmlog"), path("cut.lcmlog"), std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::resize_file(path("cut.lcmlog"), std::filesystem::file_size(path("cut.lcmlog")) - 77);
+  const robozoo::testing::Outcome o = cli("zoo " + path("cut.lcmlog") + " -o " + path("cut.png"));
+  EXPECT_NE(o.status, 0);
+  EXPECT_NE(o.output.find("truncated"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("--allow-truncated"), std::string::npos) << o.output;
+  const robozoo::testing::Outcome ok = cli("zoo " + path("cut.lcmlog") + " --allow-truncated --cell 64x48 -o " + path("cut.png"));
+  EXPECT_EQ(ok.status, 0) << ok.output;
+}
+
+TEST_F(RenderCli, LogWithoutChampions) {
+  {
+    EventLogWriter w = EventLogWriter::create(path("empty-run.lcmlog"));
+    render::testing::append(w, kChannelRun, render::testing::run_message("r"));
+    render::testing::append(w, kChannelGeneration, render::testing::generation_message("r", 0, 1));
+    w.sync();
+  }
+  const robozoo::testing::Outcome z = cli("zoo " + path("empty-run.lcmlog") + " -o " + path("e.png"));
+  EXPECT_NE(z.status, 0);
+  EXPECT_NE(z.output.find("no log holds a champion"), std::string::npos) << z.output;
+  const robozoo::testing::Outcome v = cli("video " + path("empty-run.lcmlog") + " -o " + path("e.mp4"));
+  EXPECT_NE(v.status, 0);
+  EXPECT_NE(v.output.find("no champion"), std::string::npos) << v.output;
+  EXPECT_FALSE(file_exists(path("e.png")));
+  EXPECT_FALSE(file_exists(path("e.mp4")));
+  // Not a log at all.
+  {
+    std::ofstream(path("text.lcmlog")) << "just some text";
+  }
+  const robozoo::testing::Outcome t = cli("zoo " + path("text.lcmlog") + " -o " + path("t.png"));
+  EXPECT_NE(t.status, 0);
+  EXPECT_NE(t.output.find("not a robozoo-evolve log"), std::string::npos) << t.output;
+}
+
+TEST_F(RenderCli, OddAndMalformedVideoSizes) {
+  const robozoo::testing::Outcome odd = cli("video " + path("run.lcmlog") + " --size 641x360 -o " + path("odd.mp4"));
+  EXPECT_EQ(odd.status, 2);
+  EXPECT_NE(odd.output.find("must be even"), std::string::npos) << odd.output;
+  EXPECT_FALSE(file_exists(path("odd.mp4")));
+  const robozoo::testing::Outcome odd_h = cli("video " + path("run.lcmlog") + " --size 640x361 -o " + path("odd.mp4"));
+  EXPECT_EQ(odd_h.status, 2);
+  const robozoo::testing::Outcome bad = cli("video " + path("run.lcmlog") + " --size large -o " + path("odd.mp4"));
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("WIDTHxHEIGHT"), std::string::npos) << bad.output;
+  const robozoo::testing::Outcome top = cli("zoo " + path("run.lcmlog") + " " + path("run8.lcmlog") + " --top 2 -o " + path("x.png"));
+  EXPECT_NE(top.status, 0);
+  EXPECT_NE(top.output.find("--top takes one log"), std::string::npos) << top.output;
+}
+
+}  // namespace
+}  // namespace robozoo::render

@@ -1,0 +1,98 @@
+#include "render/video_encoder.hpp"
+
+#include <fcntl.h>  // tests/support/subprocess.hpp uses open()
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "tests/render/decode_video.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo::render {
+namespace {
+
+using robozoo::testing::file_exists;
+using robozoo::testing::TempDir;
+
+Image gradient(int w, int h, int shift) {
+  Image img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      img.set(x, y, {static_cast<uint8_t>((x + shift) * 3), static_cast<uint8_t>(y * 4), static_cast<uint8_t>(shift * 9)});
+  return img;
+}
+
+std::string bytes_of(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(VideoEncoder, WritesBrowserFriendlyH264) {
+  TempDir dir;
+  EncoderOptions o;
+  o.width = 64;
+  o.height = 48;
+  o.fps = 25;
+  {
+    VideoEncoder enc(dir / "v.mp4", o);
+    for (int i = 0; i < 12; ++i) enc.add_frame(gradient(64, 48, i));
+    EXPECT_FALSE(file_exists(dir / "v.mp4"));  // written under another name until finished
+    enc.finish();
+    EXPECT_EQ(enc.frames(), 12);
+  }
+  const auto v = testing::decode_video(dir / "v.mp4");
+  ASSERT_TRUE(v.ok) << v.error;
+  EXPECT_EQ(v.codec, "h264");
+  EXPECT_EQ(v.pix_fmt, "yuv420p");
+  EXPECT_EQ(v.width, 64);
+  EXPECT_EQ(v.height, 48);
+  EXPECT_DOUBLE_EQ(v.fps, 25.0);
+  EXPECT_EQ(v.luma.size(), 12u);
+  EXPECT_TRUE(v.moov_before_mdat);
+  EXPECT_FALSE(file_exists(dir / "v.mp4.part"));
+}
+
+TEST(VideoEncoder, SameFramesSameBytes) {
+  TempDir dir;
+  EncoderOptions o;
+  o.width = 64;
+  o.height = 48;
+  for (const char* name : {"a.mp4", "b.mp4"}) {
+    VideoEncoder enc(dir / name, o);
+    for (int i = 0; i < 8; ++i) enc.add_frame(gradient(64, 48, i));
+    enc.finish();
+  }
+  EXPECT_EQ(bytes_of(dir / "a.mp4"), bytes_of(dir / "b.mp4"));
+}
+
+TEST(VideoEncoder, OddSizesAndBadFrames) {
+  TempDir dir;
+  EncoderOptions o;
+  o.width = 65;
+  o.height = 48;
+  try {
+    VideoEncoder enc(dir / "odd.mp4", o);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("even"), std::string::npos);
+  }
+  o.width = 64;
+  o.crf = 60;
+  EXPECT_THROW(VideoEncoder(dir / "crf.mp4", o), std::invalid_argument);
+  o.crf = 23;
+  o.preset = "no-such-preset";
+  EXPECT_THROW(VideoEncoder(dir / "preset.mp4", o), std::runtime_error);
+  o.preset = "veryfast";
+  EXPECT_THROW(VideoEncoder(dir / "no/such/dir/x.mp4", o), std::runtime_error);
+  {
+    VideoEncoder enc(dir / "unfinished.mp4", o);
+    EXPECT_THROW(enc.add_frame(gradient(32, 48, 0)), std::invalid_argument);
+    enc.add_frame(gradient(64, 48, 0));
+  }  // never finished: nothing left behind
+  EXPECT_FALSE(file_exists(dir / "unfinished.mp4"));
+  EXPECT_FALSE(file_exists(dir / "unfinished.mp4.part"));
+}
+
+}  // namespace
+}  // namespace robozoo::render
