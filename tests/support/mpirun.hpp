@@ -41,9 +41,15 @@ inline int mpi_rank_of(pid_t pid) {
 
 /// The process of rank `rank` among mpirun's children (one machine: mpirun starts
 /// the ranks itself), or -1.
+/// The pid of an MPI rank started by `mpirun`, waiting up to 5 s for mpirun to
+/// start it (a resumed job may reach the interruption point before its ranks
+/// exist); -1 if it never appears.
 inline pid_t rank_pid(pid_t mpirun, int rank) {
-  for (pid_t c : children_of(mpirun))
-    if (mpi_rank_of(c) == rank) return c;
+  for (int attempt = 0; attempt < 250; ++attempt) {
+    for (pid_t c : children_of(mpirun))
+      if (mpi_rank_of(c) == rank) return c;
+    ::usleep(20000);
+  }
   return -1;
 }
 
