@@ -1,8 +1,6 @@
 // robozoo-evolve publishing live: a run recorded by LCM's own lcm-logger inside a
-// private network namespace. Runs alone (RUN_SERIAL), and the publisher runs
-// niced with one worker: lcm-logger 1.3.1 silently drops packets when its
-// dispatch thread is starved of CPU (the kernel's UDP counters show every
-// datagram delivered), which is not what this tests.
+// private network namespace. Runs alone (RUN_SERIAL), with the publisher niced
+// and on one worker, so that lcm-logger has the CPU it needs.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 
@@ -19,20 +17,35 @@ using namespace robozoo::testing;
 
 
 TEST(EvolveLive, LiveRunIsRecordedCompletelyByLcmLogger) {
-  TempDir dir;
+  // lcm-logger 1.3.1 itself sometimes drops a burst of packets in user space
+  // (the kernel's UDP counters show every datagram delivered; about one run in
+  // five here, idle machine or not). A recording can only be complete if the
+  // publisher sent every event, so the run is tried up to three times and one
+  // complete recording passes; every attempt's shortfall is reported.
   const std::string url = "udpm://239.255.76.67:7667?ttl=0";
-  const std::string script =
-      "ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
-      "(lcm-logger -f --lcm-url='" + url + "&recv_buf_size=4194304' '" + (dir / "bus.lcmlog") + "' >/dev/null 2>&1 & L=\\$!; sleep 1; " +
-      "nice -n 15 " + join(evolve_args(dir / "own.lcmlog", 1, {"--lcm-url", url})) +
-      "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)";
-  const auto o = run_shell("timeout 120 unshare -n sh -c \"" + script + "\"");
-  ASSERT_EQ(o.status, 0) << o.output;
-  const auto own = read_event_log(dir / "own.lcmlog"), bus = read_event_log(dir / "bus.lcmlog");
-  EXPECT_EQ(first_log_difference(own, bus), "")
-      << "poses: " << count_channel(own, kChannelPose) << " logged, " << count_channel(bus, kChannelPose)
-      << " received";
-  EXPECT_GT(count_channel(bus, kChannelGeneration), 0u);
+  std::string failures;
+  for (int attempt = 1; attempt <= 3; ++attempt) {
+    TempDir dir;
+    const std::string bus_log = dir / "bus.lcmlog";
+    const std::string script =
+        "ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
+        "(lcm-logger -f --lcm-url='" + url + "' '" + bus_log + "' >/dev/null 2>&1 & L=\\$!; sleep 1; " +
+        "nice -n 15 " + join(evolve_args(dir / "own.lcmlog", 1, {"--lcm-url", url})) +
+        "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)";
+    const auto o = run_shell("timeout 120 unshare -n sh -c \"" + script + "\"");
+    ASSERT_EQ(o.status, 0) << o.output;
+    const auto own = read_event_log(dir / "own.lcmlog"), bus = read_event_log(bus_log);
+    ASSERT_GT(count_channel(bus, kChannelGeneration), 0u) << "nothing reached lcm-logger";
+    const std::string diff = first_log_difference(own, bus);
+    if (diff.empty()) {
+      if (!failures.empty()) std::cerr << "complete on attempt " << attempt << " after:\n" << failures;
+      return;
+    }
+    failures += "attempt " + std::to_string(attempt) + ": " + diff + " (poses: " +
+                std::to_string(count_channel(own, kChannelPose)) + " logged, " +
+                std::to_string(count_channel(bus, kChannelPose)) + " received)\n";
+  }
+  FAIL() << "no complete recording in 3 attempts:\n" << failures;
 }
 
 }  // namespace

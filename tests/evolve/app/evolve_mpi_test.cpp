@@ -108,7 +108,11 @@ TEST(EvolveMpi, CancelledJobThenResumedOnOtherRankCounts) {
   expect_resume_line(o, log);
   EXPECT_FALSE(read_checkpoint(log + ".checkpoint").finished);
   // Resume under 2 ranks, kill a worker rank again, finish under 4 ranks.
-  const Outcome again = interrupt(mpi_evolve_args(2, log, {"--resume"}, kLonger), log, 4,
+  // Interrupt the resumed job one generation after where it resumes, so that it is
+  // surely still running (a fixed generation may already be behind it).
+  const int resumed_at = generations_done(log);
+  ASSERT_LT(resumed_at, 7) << "the cancelled job got too far for a second interruption";
+  const Outcome again = interrupt(mpi_evolve_args(2, log, {"--resume"}, kLonger), log, resumed_at + 1,
                                   [](pid_t mpirun) { kill_process(rank_pid(mpirun, 1), SIGKILL); }, dir / "out2.txt");
   expect_resume_line(again, log);
   const Outcome resumed = run_logged(mpi_evolve_args(4, log, {"--resume"}, kLonger));
