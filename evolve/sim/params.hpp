@@ -27,13 +27,12 @@ struct SimParams {
   // Motors: velocity servo towards the CTRNN's target angle
   double servo_gain = 10.0;          ///< target joint speed per rad of angle error (1/s)
   double servo_max_speed = 10.0;     ///< cap on the commanded joint speed (rad/s)
-  double motor_strength = 10.0;      ///< hinge torque limit in units of the torque that holds the
-                                     ///< hinge's lighter side level against gravity
-                                     ///< (dimensionless): limit = motor_strength * gravity *
-                                     ///< min over the two sides of sum(mass * distance to anchor).
-                                     ///< Random robots: 0-3 % faults for 5-30; at 100, 9 % of robots
-                                     ///< explode (|d| > 5 m, bodies thrown > 3 m) at 100.
-                                     ///< 10 leaves a margin of ~10x below that.
+  double motor_strength = 10.0;      ///< hinge torque limit in units of the largest gravity torque
+                                     ///< the lighter of the two hinged bodies exerts about the
+                                     ///< anchor (dimensionless): limit = motor_strength * gravity *
+                                     ///< min over the two bodies of sum(mass * distance to anchor).
+                                     ///< Faults: 0.3-0.4 % of random and of grown robots at 10, 5 % of
+                                     ///< grown ones at 20, 12 % at 30, half of all robots at 100.
   // Target and sensors
   double target_x = 10.0;            ///< target position (m)
   double target_y = 0.0;             ///< (m)
@@ -47,22 +46,22 @@ struct SimParams {
   double rest_output_rate = 1e-3;    ///< ... and the controller below this |d output/dt| (1/s)
   int rest_steps = 50;               ///< consecutive steps at rest that end the run (count)
   // Faults: per-body acceleration from consecutive velocities, (v_t - v_{t-1}) / dt.
-  // Chosen on random robots: at the default physics the largest accelerations of
-  // robots that stay sane reach ~1,000 m/s^2 and ~20,000 rad/s^2 (a small sphere
-  // landing after a fall; 95 % of robots stay under 470 and 6,700), while every
-  // robot that exploded with motor_strength 100 passed both thresholds.
+  // Chosen on random and on grown robots (evolve/sim/README.md): those that stay
+  // sane peak at 1,330-1,630 m/s^2 and 15,700-19,400 rad/s^2 (95 % under 570 and
+  // 11,100), while every robot that exploded with motor_strength 100 or 1,000
+  // passed both thresholds.
   double max_linear_acceleration = 2000.0;   ///< fault above this (m/s^2)
   double max_angular_acceleration = 20000.0;  ///< fault above this (rad/s^2)
   // Rolling rules (paper 2.4)
   bool rolling_contact_rule = true;  ///< rule (i): some sphere in ground contact > fraction of steps
   double rolling_contact_fraction = 0.95;  ///< rule (i)'s fraction of the steps run (dimensionless)
   bool rolling_spin_rule = true;     ///< rule (ii): |time-averaged angular velocity| of a body > threshold
-  /// Rule (ii)'s threshold (rad/s). Chosen from 683 random robots (1,000 drawn,
-  /// 1-50 spheres) that moved without a fault: their worst body's time-averaged
-  /// angular speed has median 0.07, 95th percentile 0.42, 99th 0.77 and maximum
-  /// 1.15 rad/s. 1.0 sits above 99.7 % of them, so unpurposeful flailing and
-  /// settling pass, while a body failing it turns over more than 25 rad (4 turns)
-  /// one way in the 25 s episode: rolling (0.5 m/s on a sphere of radius 0.5).
+  /// Rule (ii)'s threshold (rad/s), from the worst body's time-averaged angular
+  /// speed of robots that moved without a fault: random robots (661 movers of
+  /// 1,000): median 0.07, 95th percentile 0.40, 99th 0.71 rad/s; robots grown
+  /// from random CPPNs (308 movers): median 0.08, 95th 0.94, 99th 1.32. 1.0 passes
+  /// 99.8 % and 95.5 % of them; a body that fails it turned more than 25 rad
+  /// (4 turns) one way in the 25 s episode: it rolled.
   double rolling_spin_threshold = 1.0;
 };
 

@@ -14,15 +14,19 @@ namespace robozoo {
 /// Commanded joint speed (rad/s) for a target and a current angle (rad).
 double servo_speed(double target, double angle, const SimParams& params);
 
-/// Per joint (robot.joints order), the side moment the torque limit scales
-/// with: the smaller over the two sides of the joint (the bodies on each side
-/// of the body tree once the joint is cut) of sum(sphere mass * lever), where
-/// a sphere's lever is its distance from the anchor, and at least its radius
-/// (so a side that is a single sphere around the anchor still gets a torque).
-/// Units kg m. Uses the model's (grown) positions.
-std::vector<double> joint_side_moments(const Robot& robot);
+/// Per joint (robot.joints order), the moment the torque limit scales with:
+/// the smaller, over the two bodies the hinge joins, of sum(sphere mass *
+/// lever) over the body's spheres, where a sphere's lever is its distance from
+/// the anchor, and at least its radius (so a body that is a single sphere
+/// around the anchor still gets a torque). gravity times it is the largest
+/// gravity torque that body alone exerts about the anchor. Only the two joined
+/// bodies count, not what hangs beyond them: a motor's torque acts on them
+/// first, and scaling by whole limbs let a hinge between two tiny bodies in a
+/// long chain spin them up until the solver failed (24 % faults on robots grown
+/// from random CPPNs, against 0.3 % this way). Units kg m; grown positions.
+std::vector<double> joint_body_moments(const Robot& robot);
 
-/// Torque limits (N m) per joint: motor_strength * gravity * side moment.
+/// Torque limits (N m) per joint: motor_strength * gravity * body moment.
 std::vector<double> motor_torque_limits(const Robot& robot, const SimParams& params);
 
 /// Sets every hinge's motor towards targets[i] = outputs[neuron] * range.
