@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <set>
@@ -118,8 +119,15 @@ TEST(PipeTransport, WorkerThatExitsOrBreaksTheProtocolIsReported) {
   PipeTransport t(1, [](const Bytes& in) -> Bytes {
     if (text(in) == "exit") ::_exit(7);
     if (text(in) == "garbage") {  // write around the protocol on the worker's socket
+      // The worker's socket is its only socket (inherited descriptors are closed),
+      // but its number depends on what the test runner had open: find it.
       const char junk[] = "this is not a frame, not at all";
-      if (::write(3, junk, sizeof junk) < 0) ::_exit(8);
+      bool wrote = false;
+      for (int fd = 3; fd < 256 && !wrote; ++fd) {
+        struct stat st {};
+        if (::fstat(fd, &st) == 0 && S_ISSOCK(st.st_mode)) wrote = ::write(fd, junk, sizeof junk) > 0;
+      }
+      if (!wrote) ::_exit(8);
     }
     return in;
   });
