@@ -46,16 +46,7 @@ int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& ses
     // Rank 0's largest serial cost, overlapped with the next generation's evaluations.
     opts.background_checkpoint = true;
     std::unique_ptr<Evolution> evo;
-    try {
-      evo = std::make_unique<Evolution>(config, opts, evaluator);
-    } catch (const std::exception& e) {
-      std::cerr << "robozoo-evolve: " << e.what() << "\n";
-      return 2;
-    }
-    if (evo->finished()) {
-      std::cerr << "robozoo-evolve: run " << evo->run_id() << " in " << opts.log_path << " is already complete\n";
-      return 0;
-    }
+    if (const auto status = open_evolution(config, opts, evaluator, evo)) return *status;
     // Said when mpirun stops rank 0, made then (the checkpoint may be on its way);
     // forgotten before `evo` goes, whichever way this scope ends.
     watcher.set_message_source([&evo = *evo, &opts] {

@@ -62,6 +62,21 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                "evolves, logs and checkpoints, ranks 1..N-1 evaluate; --workers is ignored)");
 }
 
+std::optional<int> open_evolution(const RunConfig& config, const EvolveOptions& opts, Evaluator& evaluator,
+                                  std::unique_ptr<Evolution>& evo) {
+  try {
+    evo = std::make_unique<Evolution>(config, opts, evaluator);
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-evolve: " << e.what() << "\n";
+    return 2;
+  }
+  if (evo->finished()) {
+    std::cerr << "robozoo-evolve: run " << evo->run_id() << " in " << opts.log_path << " is already complete\n";
+    return 0;
+  }
+  return std::nullopt;
+}
+
 std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConfig& config, EvolveOptions& opts) {
   try {
     config = o.preset.empty() ? RunConfig{} : preset_config(o.preset);
@@ -129,16 +144,7 @@ int run_run_command(const CLI::App& app, const RunOptions& o) {
     // Workers are forked before anything else (no LCM, no open log in them).
     PoolEvaluator evaluator(workers, config.eval, o.job_timeout);
     std::unique_ptr<Evolution> evo;
-    try {
-      evo = std::make_unique<Evolution>(config, opts, evaluator);
-    } catch (const std::exception& e) {
-      std::cerr << "robozoo-evolve: " << e.what() << "\n";
-      return 2;
-    }
-    if (evo->finished()) {
-      std::cerr << "robozoo-evolve: run " << evo->run_id() << " in " << opts.log_path << " is already complete\n";
-      return 0;
-    }
+    if (const auto status = open_evolution(config, opts, evaluator, evo)) return *status;
     if (!o.quiet) std::cerr << run_banner(*evo, opts, std::to_string(workers) + " workers");
     evo->run([&](const ProgressReport& r) {
       if (!o.quiet) std::cerr << format_progress(r) << std::endl;

@@ -39,6 +39,11 @@ int run_run_command(const CLI::App& app, const RunOptions& o);
 /// exit status when the program stops here (2: bad configuration or files, said in
 /// one line on stderr; 0: --print-config printed), nothing when the run goes on.
 std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConfig& config, EvolveOptions& opts);
+/// Opens (starts or resumes) the run. Returns an exit status when the program should
+/// stop here: 2 when the run cannot be opened (the message is printed), 0 when it
+/// is already complete; std::nullopt with `evo` set otherwise.
+std::optional<int> open_evolution(const RunConfig& config, const EvolveOptions& opts, Evaluator& evaluator,
+                                  std::unique_ptr<Evolution>& evo);
 
 /// The lines printed when a run starts (log, checkpoint, live URL); `evaluators`
 /// says what evaluates, e.g. "2 workers".
