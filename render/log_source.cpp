@@ -28,13 +28,10 @@ LoadedLog load_log(const std::string& path, const LoadOptions& options) {
   if (contents.records.empty())
     throw std::runtime_error(path + ": no LCM events in " + std::to_string(st.st_size) +
                              " bytes: not a robozoo-evolve log");
-  // Bytes the complete events account for (LCM event header: sync word,
-  // event number, timestamp, channel and data lengths = 28 bytes). Fewer than
-  // the file holds: it ends inside an event (or holds garbage LCM skipped).
-  int64_t accounted = 0;
+  int64_t accounted = 0;  // bytes of the complete events, for the message
   for (const LogRecord& r : contents.records)
     accounted += 28 + static_cast<int64_t>(r.channel.size()) + static_cast<int64_t>(r.data.size());
-  const bool truncated = contents.truncated || accounted < static_cast<int64_t>(st.st_size);
+  const bool truncated = contents.truncated;
   if (truncated && !options.allow_truncated)
     throw std::runtime_error(path + ": the log is truncated or damaged (" +
                              std::to_string(static_cast<int64_t>(st.st_size) - accounted) +

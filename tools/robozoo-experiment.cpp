@@ -1,6 +1,7 @@
 // robozoo-experiment: the paper's experiment (issue 7). Runs N seeds of each
 // regime (feed-forward and recurrent CPPNs) with robozoo-evolve, one log per
-// trial in --out, one trial after the other. It can be stopped (Ctrl-C, SIGTERM)
+// trial in --out, one trial after the other, each locally (--workers) or as an
+// MPI job (--mpi N: mpirun -np N robozoo-evolve --mpi, issue 8). It can be stopped (Ctrl-C, SIGTERM)
 // and started again at any time: finished trials are skipped, a stopped one is
 // resumed from its checkpoint, the others are started. Prints progress across
 // the whole experiment with an estimated finish time. Then: robozoo-stats DIR.
@@ -9,8 +10,10 @@
 #include <CLI/CLI.hpp>
 
 #include <csignal>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -61,6 +64,20 @@ std::string progress_line(const Experiment& e, size_t current) {
   return s.str();
 }
 
+/// The last `n` lines of a trial's output file, each indented, for an error message.
+std::string last_lines(const std::string& path, size_t n) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) {
+    if (l.empty()) continue;
+    lines.push_back(l);
+    if (lines.size() > n) lines.erase(lines.begin());
+  }
+  std::string out;
+  for (const auto& l : lines) out += "    " + l + "\n";
+  return out;
+}
+
 void print_status(const Experiment& e) {
   std::cout << "trial                 state        generations  time\n";
   for (size_t i = 0; i < e.trials.size(); ++i) {
@@ -97,11 +114,29 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   app.add_option("--steps", p.steps, "physics steps per evaluation, passed to robozoo-evolve (default: its own, 2500)")
       ->check(CLI::Range(1, 1000000000));
+  std::string mpirun = "mpirun";
+  app.add_option("--mpi", p.mpi_ranks,
+                 "run each trial as an MPI job of this many ranks: <mpirun> -np RANKS robozoo-evolve --mpi ... "
+                 "(rank 0 evolves, logs and checkpoints; ranks 1.. evaluate; >= 2; excludes --workers)")
+      ->check(CLI::Range(2, 1000000));
+  app.add_option("--mpirun", mpirun,
+                 "the MPI launcher with its options, split at spaces, before -np (e.g. \"mpirun --hostfile hosts\" "
+                 "or \"srun --mpi=pmix\"); only with --mpi")
+      ->capture_default_str();
   app.add_option("--evolve", evolve, "the robozoo-evolve program (default: the one next to this program)");
   app.add_option("--progress-interval", progress_interval, "seconds between progress lines (at most one per generation)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--status", status_only, "print where each trial stands and exit");
   CLI11_PARSE(app, argc, argv);
+  {
+    std::istringstream words(mpirun);
+    p.mpirun.clear();
+    for (std::string w; words >> w;) p.mpirun.push_back(w);
+  }
+  if (p.mpi_ranks == 0 && app.count("--mpirun") > 0) {
+    std::cerr << "robozoo-experiment: --mpirun only applies with --mpi RANKS\n";
+    return 2;
+  }
 
   Experiment e;
   e.params = p;
@@ -127,6 +162,17 @@ int main(int argc, char** argv) {
     std::cerr << "robozoo-experiment: cannot run " << evolve << " (build robozoo-evolve, or give --evolve)\n";
     return 2;
   }
+  if (p.mpi_ranks > 0) {
+    const char* path = std::getenv("PATH");
+    const std::string launcher = find_program(p.mpirun.front(), path ? path : "/usr/bin:/bin");
+    if (launcher.empty() || !is_executable(launcher)) {
+      std::cerr << "robozoo-experiment: cannot run the MPI launcher " << p.mpirun.front()
+                << " (install Open MPI: tools/setup.sh, or give --mpirun)\n";
+      return 2;
+    }
+    p.mpirun.front() = launcher;
+    e.params.mpirun = p.mpirun;
+  }
 
   int finished = 0, partial = 0;
   for (const auto& s : e.status) {
@@ -136,7 +182,9 @@ int main(int argc, char** argv) {
   std::cerr << "robozoo-experiment: " << e.trials.size() << " trials (" << p.trials << " per regime), population "
             << p.population << ", " << p.generations << " generations"
             << (p.steps > 0 ? ", " + std::to_string(p.steps) + " steps" : std::string()) << ", "
-            << (p.workers > 0 ? std::to_string(p.workers) : std::string("all")) << " workers, in " << p.out_dir
+            << (p.mpi_ranks > 0 ? "MPI jobs of " + std::to_string(p.mpi_ranks) + " ranks"
+                                : (p.workers > 0 ? std::to_string(p.workers) : std::string("all")) + " workers")
+            << ", in " << p.out_dir
             << "\n  " << finished << " finished (skipped), " << partial << " to resume, "
             << e.trials.size() - static_cast<size_t>(finished + partial) << " to start" << std::endl;
 
@@ -149,8 +197,12 @@ int main(int argc, char** argv) {
               << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done)
                          : std::string("starting"))
               << " (log " << t.log_path << ")" << std::endl;
-    std::vector<std::string> args = {evolve};
-    for (auto& a : evolve_arguments(t, p, resume)) args.push_back(a);
+    const std::vector<std::string> args = trial_command(t, e.params, evolve, resume);
+    if (p.mpi_ranks > 0) {
+      std::cerr << " ";
+      for (const auto& a : args) std::cerr << " " << a;
+      std::cerr << std::endl;
+    }
     pid_t pid;
     try {
       pid = spawn_child(args, t.output_path);
@@ -185,8 +237,13 @@ int main(int argc, char** argv) {
           return 1;
         }
         if (ev.status != 0 || e.status[i].state != TrialState::Finished) {
-          std::cerr << "robozoo-experiment: robozoo-evolve failed on " << t.name() << " (exit status " << ev.status
-                    << "); its messages are in " << t.output_path << "\n";
+          std::cerr << "robozoo-experiment: " << (p.mpi_ranks > 0 ? "the MPI job of robozoo-evolve" : "robozoo-evolve")
+                    << " failed on " << t.name() << " (exit status " << ev.status << "); it ended with:\n"
+                    << last_lines(t.output_path, 8) << "  (all its messages are in " << t.output_path << ")"
+                    << (e.status[i].generations_done > 0 ? ". Its checkpoint is kept: run the same command again to "
+                                                           "resume it"
+                                                         : "")
+                    << "\n";
           return 1;
         }
         std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": finished ("

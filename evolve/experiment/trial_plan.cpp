@@ -17,6 +17,12 @@ void validate_experiment(const ExperimentParams& p) {
   need(p.population >= 2, "--population must be >= 2, got " + std::to_string(p.population));
   need(p.steps >= 0, "--steps must be >= 1, got " + std::to_string(p.steps));
   need(p.workers >= 0, "--workers must be >= 1, got " + std::to_string(p.workers));
+  need(p.mpi_ranks == 0 || p.mpi_ranks >= 2,
+       "--mpi needs at least 2 ranks (rank 0 evolves, ranks 1.. evaluate), got " + std::to_string(p.mpi_ranks));
+  need(p.mpi_ranks == 0 || p.workers == 0,
+       "--workers and --mpi exclude each other: with --mpi the trial's ranks 1.. are its workers");
+  need(p.mpi_ranks == 0 || (!p.mpirun.empty() && !p.mpirun.front().empty()),
+       "--mpirun: the MPI launcher is empty");
   need(!p.out_dir.empty(), "--out: the experiment needs a folder");
 }
 
@@ -46,6 +52,19 @@ std::vector<std::string> evolve_arguments(const Trial& t, const ExperimentParams
   if (p.workers > 0) a.insert(a.end(), {"--workers", std::to_string(p.workers)});
   if (resume) a.push_back("--resume");
   return a;
+}
+
+std::vector<std::string> trial_command(const Trial& t, const ExperimentParams& p, const std::string& evolve,
+                                       bool resume) {
+  std::vector<std::string> cmd;
+  if (p.mpi_ranks > 0) {
+    cmd = p.mpirun;
+    cmd.insert(cmd.end(), {"-np", std::to_string(p.mpi_ranks)});
+  }
+  cmd.push_back(evolve);
+  for (auto& a : evolve_arguments(t, p, resume)) cmd.push_back(std::move(a));
+  if (p.mpi_ranks > 0) cmd.push_back("--mpi");
+  return cmd;
 }
 
 }  // namespace robozoo

@@ -16,6 +16,8 @@ struct ExperimentParams {
   int population = 150;     ///< genomes per generation (count)
   int steps = 0;            ///< physics steps per evaluation (count); 0: robozoo-evolve's default (2,500)
   int workers = 0;          ///< robozoo-evolve's --workers (count); 0: one per core
+  int mpi_ranks = 0;        ///< ranks of each trial's MPI job (count, >= 2); 0: local worker processes
+  std::vector<std::string> mpirun = {"mpirun"};  ///< the MPI launcher and its own options, before -np
   std::string out_dir;      ///< folder of the trials' logs
 };
 
@@ -36,5 +38,13 @@ std::vector<Trial> plan_trials(const ExperimentParams& p);
 
 /// robozoo-evolve's arguments (after the program name) to start or resume `t`.
 std::vector<std::string> evolve_arguments(const Trial& t, const ExperimentParams& p, bool resume);
+
+/// The whole command that starts or resumes `t` with the robozoo-evolve at
+/// `evolve`: that program and evolve_arguments() for a local trial, or, with
+/// mpi_ranks > 0, `<mpirun...> -np <mpi_ranks> <evolve> <arguments> --mpi` (rank 0
+/// evolves, logs and checkpoints; ranks 1.. evaluate). The launcher's first word
+/// is returned as given; resolving it on PATH is the caller's.
+std::vector<std::string> trial_command(const Trial& t, const ExperimentParams& p, const std::string& evolve,
+                                       bool resume);
 
 }  // namespace robozoo

@@ -49,12 +49,15 @@ struct LogRecord {
   std::vector<uint8_t> data;
 };
 
-/// Reads every event of a log. Throws std::runtime_error naming the path if it
-/// cannot be opened. LCM's reader resynchronises on the sync word after
-/// garbage; a truncated last event ends the reading (reported in `truncated`).
+/// Reads the complete events of a log, from the start up to the first cut or
+/// damaged event (LCM 1.3.1's reader does not look for the next sync word).
+/// Throws std::runtime_error naming the path if it cannot be opened.
+/// `truncated` says the events read do not account for every byte of the file:
+/// it ends inside an event, or holds bytes that are not events. (robozoo-replay
+/// reads damaged logs with its own reader that skips to the next event.)
 struct LogContents {
   std::vector<LogRecord> records;
-  bool truncated = false;   ///< the file ends inside an event
+  bool truncated = false;   ///< the file holds bytes that are not complete events
   int64_t file_bytes = 0;
 };
 LogContents read_event_log(const std::string& path);

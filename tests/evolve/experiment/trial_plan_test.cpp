@@ -67,5 +67,48 @@ TEST(TrialPlan, BadSizesAreRefused) {
   EXPECT_THROW(validate_experiment(p), std::invalid_argument);
 }
 
+TEST(TrialPlan, LocalTrialCommandIsTheProgramAndItsArguments) {
+  const ExperimentParams p = small();
+  const Trial t = plan_trials(p)[0];
+  const auto cmd = trial_command(t, p, "/bin/robozoo-evolve", true);
+  auto expected = evolve_arguments(t, p, true);
+  expected.insert(expected.begin(), "/bin/robozoo-evolve");
+  EXPECT_EQ(cmd, expected);
+  EXPECT_EQ(std::count(cmd.begin(), cmd.end(), "--mpi"), 0);
+}
+
+TEST(TrialPlan, MpiTrialCommandWrapsRobozooEvolveInTheLauncher) {
+  ExperimentParams p = small();
+  p.workers = 0;
+  p.mpi_ranks = 4;
+  p.mpirun = {"/usr/bin/mpirun", "--oversubscribe"};
+  const Trial t = plan_trials(p)[1];
+  for (bool resume : {false, true}) {
+    const auto cmd = trial_command(t, p, "/bin/robozoo-evolve", resume);
+    ASSERT_GE(cmd.size(), 5u);
+    EXPECT_EQ(std::vector<std::string>(cmd.begin(), cmd.begin() + 5),
+              (std::vector<std::string>{"/usr/bin/mpirun", "--oversubscribe", "-np", "4", "/bin/robozoo-evolve"}));
+    EXPECT_EQ(cmd.back(), "--mpi");
+    EXPECT_TRUE(has(cmd, {"--log", "/tmp/x/recurrent-s1.lcmlog"}));
+    EXPECT_TRUE(has(cmd, {"--steps", "200"}));
+    EXPECT_EQ(std::count(cmd.begin(), cmd.end(), "--workers"), 0);
+    EXPECT_EQ(std::count(cmd.begin(), cmd.end(), "--resume"), resume ? 1 : 0);
+  }
+}
+
+TEST(TrialPlan, BadMpiSettingsAreRefused) {
+  ExperimentParams p = small();
+  p.workers = 0;
+  p.mpi_ranks = 1;  // rank 0 alone would have nobody to evaluate
+  EXPECT_THROW(validate_experiment(p), std::invalid_argument);
+  p.mpi_ranks = 2;
+  EXPECT_NO_THROW(validate_experiment(p));
+  p.workers = 2;  // the ranks are the workers
+  EXPECT_THROW(validate_experiment(p), std::invalid_argument);
+  p.workers = 0;
+  p.mpirun.clear();
+  EXPECT_THROW(validate_experiment(p), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace robozoo

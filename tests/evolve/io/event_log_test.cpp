@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <fstream>
 
 #include "tests/support/subprocess.hpp"
@@ -52,6 +54,42 @@ TEST(EventLog, ResumeCutsBackAndContinuesNumbering) {
   EXPECT_EQ(c.records[2].data, bytes(10, 9));
   EXPECT_EQ(c.records[2].eventnum, 2);
   EXPECT_THROW(EventLogWriter::resume(dir / "a.lcmlog", 1 << 30, 0), std::runtime_error);
+}
+
+TEST(EventLog, ACutLastEventOrTrailingGarbageIsReported) {
+  TempDir dir;
+  int64_t whole = 0;
+  {
+    auto log = EventLogWriter::create(dir / "a.lcmlog");
+    log.write("A", bytes(100, 1), 1);
+    log.write("A", bytes(100, 2), 2);
+    log.sync();
+    whole = log.bytes();
+  }
+  ASSERT_EQ(whole, 2 * (28 + 1 + 100));
+  for (int64_t cut : {whole - 1, whole - 50, whole - 101 - 27}) {  // inside the data, the header
+    ASSERT_EQ(::truncate((dir / "a.lcmlog").c_str(), 0), 0);
+    {
+      auto log = EventLogWriter::create(dir / "a.lcmlog");
+      log.write("A", bytes(100, 1), 1);
+      log.write("A", bytes(100, 2), 2);
+    }
+    ASSERT_EQ(::truncate((dir / "a.lcmlog").c_str(), cut), 0);
+    const auto c = read_event_log(dir / "a.lcmlog");
+    EXPECT_EQ(c.records.size(), 1u) << "cut at " << cut;
+    EXPECT_TRUE(c.truncated) << "cut at " << cut;
+    EXPECT_EQ(c.file_bytes, cut);
+  }
+  {
+    auto log = EventLogWriter::create(dir / "b.lcmlog");
+    log.write("A", bytes(100, 1), 1);
+  }
+  std::ofstream(dir / "b.lcmlog", std::ios::app) << "not an event";
+  // LCM 1.3.1 checks the header after each event and drops the event that
+  // garbage follows ("Invalid header after log data"); the flag must say so.
+  const auto g = read_event_log(dir / "b.lcmlog");
+  EXPECT_LE(g.records.size(), 1u);
+  EXPECT_TRUE(g.truncated);
 }
 
 TEST(EventLog, MissingFileIsAClearError) {
