@@ -102,6 +102,20 @@ struct TempDir {
   std::string operator/(const std::string& name) const { return path + "/" + name; }
 };
 
+/// Waits up to `seconds` for no process's command line to match `pattern`
+/// (pgrep -f); returns pgrep's output for those still left ("" when none is).
+/// Write one character of the pattern as a class ("[r]ecurrent") so that the
+/// pattern does not match the shell that runs pgrep.
+inline std::string processes_left(const std::string& pattern, double seconds = 2.0) {
+  std::string left;
+  for (int i = 0; i <= static_cast<int>(seconds * 100); ++i) {
+    left = run_shell("pgrep -f '" + pattern + "'").output;
+    if (left.empty()) break;
+    ::usleep(10000);
+  }
+  return left;
+}
+
 /// Child process ids of `pid` (from /proc).
 inline std::vector<pid_t> children_of(pid_t pid) {
   std::vector<pid_t> out;

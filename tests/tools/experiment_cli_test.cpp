@@ -100,14 +100,7 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
   ASSERT_FALSE(read_checkpoint(rec_cp).finished) << "the recurrent trial finished before the signal";
   const FileStamp ff = stamp(dir / "feedforward-s1.lcmlog");
   // No robozoo-evolve is left running on the folder.
-  // ([r] keeps the pattern from matching the shell that runs pgrep.)
-  std::string left;
-  for (int i = 0; i < 100; ++i) {
-    left = run_shell("pgrep -f '" + dir.path + "/[r]ecurrent-s1.lcmlog'").output;
-    if (left.empty()) break;
-    ::usleep(10000);
-  }
-  EXPECT_EQ(left, "");
+  EXPECT_EQ(processes_left(dir.path + "/[r]ecurrent-s1.lcmlog"), "");
 
   const auto resumed = run_shell(shell(driver(dir.path, sizes)));
   ASSERT_EQ(resumed.status, 0) << resumed.output;

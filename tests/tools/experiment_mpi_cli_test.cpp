@@ -88,13 +88,7 @@ TEST(ExperimentMpiCli, AStoppedMpiExperimentLeavesNoRankAndResumesOnOtherRanks) 
   ASSERT_TRUE(read_checkpoint(ff_cp).finished);
   ASSERT_FALSE(read_checkpoint(rec_cp).finished) << "the trial finished before the signal";
   // Neither mpirun nor any rank of the stopped trial is left running.
-  std::string left;
-  for (int i = 0; i < 200; ++i) {
-    left = run_shell("pgrep -f '" + dir.path + "/[r]ecurrent-s1.lcmlog'").output;
-    if (left.empty()) break;
-    ::usleep(10000);
-  }
-  EXPECT_EQ(left, "");
+  EXPECT_EQ(processes_left(dir.path + "/[r]ecurrent-s1.lcmlog"), "");
 
   // Resumed with 3 ranks: the stopped trial ends equal to an uninterrupted local run.
   const auto resumed = run_shell(shell(mpi_driver(dir.path, 3, sizes)));
