@@ -32,8 +32,9 @@ struct StatsOutcome {
   std::string out_dir;
 };
 
-/// The logs (*.lcmlog) directly in `dir`, sorted by name. Throws
-/// std::invalid_argument when `dir` is not a folder.
+/// The logs (*.lcmlog) directly in `dir`, sorted by name with runs of digits
+/// compared as numbers (recurrent-s2 before recurrent-s10, so zoo sheets show
+/// the seeds in order). Throws std::invalid_argument when `dir` is not a folder.
 std::vector<std::string> list_logs(const std::string& dir);
 
 /// Runs the whole job, telling `progress` what it does. Throws
