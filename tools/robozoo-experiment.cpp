@@ -151,9 +151,9 @@ int main(int argc, char** argv) {
     print_status(e);
     return 0;
   }
+  // Both programs are checked before the folder is made: a refused start leaves nothing behind.
   try {
     if (evolve.empty()) evolve = program_dir() + "/robozoo-evolve";
-    std::filesystem::create_directories(p.out_dir);
   } catch (const std::exception& ex) {
     std::cerr << "robozoo-experiment: " << ex.what() << "\n";
     return 2;
@@ -170,8 +170,13 @@ int main(int argc, char** argv) {
                 << " (install Open MPI: tools/setup.sh, or give --mpirun)\n";
       return 2;
     }
-    p.mpirun.front() = launcher;
-    e.params.mpirun = p.mpirun;
+    e.params.mpirun.front() = launcher;
+  }
+  try {
+    std::filesystem::create_directories(p.out_dir);
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+    return 2;
   }
 
   int finished = 0, partial = 0;
