@@ -25,6 +25,22 @@ Eigen::Vector3f to_eye(const Eigen::Matrix4d& view, const Eigen::Vector3d& dir) 
 
 Eigen::Vector3f rgbf(Rgb c) { return {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f}; }
 
+/// Draws `mesh` scaled by (sx, sy, sz) and moved to `at`; returns its triangles.
+size_t draw_placed(const GpuMesh& mesh, const Eigen::Vector3d& at, double sx, double sy, double sz) {
+  glPushMatrix();
+  glTranslated(at.x(), at.y(), at.z());
+  glScaled(sx, sy, sz);
+  mesh.draw();
+  glPopMatrix();
+  return mesh.num_triangles();
+}
+
+/// The target's pole and the ball on top of it, `h` high at (x, y) on the ground.
+size_t draw_target_pole(const GpuMesh& cylinder, const GpuMesh& ball, double x, double y, double h) {
+  return draw_placed(cylinder, {x, y, 0.0}, 0.025 * h, 0.025 * h, h) +
+         draw_placed(ball, {x, y, h}, 0.08 * h, 0.08 * h, 0.08 * h);
+}
+
 }  // namespace
 
 struct SceneRenderer::Impl {
@@ -102,22 +118,8 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
     prog.material(0.4f, 30.0f, 0.1f);
     color(st.target);
     const double h = st.target_height;
-    glPushMatrix();
-    glTranslated(view.target.x(), view.target.y(), 0.004);
-    glScaled(0.5 * h, 0.5 * h, 1);
-    impl_->ring.draw();
-    glPopMatrix();
-    glPushMatrix();
-    glTranslated(view.target.x(), view.target.y(), 0);
-    glScaled(0.025 * h, 0.025 * h, h);
-    impl_->cylinder.draw();
-    glPopMatrix();
-    glPushMatrix();
-    glTranslated(view.target.x(), view.target.y(), h);
-    glScaled(0.08 * h, 0.08 * h, 0.08 * h);
-    impl_->spheres[3]->draw();
-    glPopMatrix();
-    last_triangles_ += impl_->ring.num_triangles() + impl_->cylinder.num_triangles() + impl_->spheres[3]->num_triangles();
+    last_triangles_ += draw_placed(impl_->ring, {view.target.x(), view.target.y(), 0.004}, 0.5 * h, 0.5 * h, 1);
+    last_triangles_ += draw_target_pole(impl_->cylinder, *impl_->spheres[3], view.target.x(), view.target.y(), h);
   }
 
   // Spheres, nearest first: llvmpipe tests depth before shading, so hidden
@@ -134,13 +136,8 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
   for (const SphereDraw* sp : order) {
     const SphereDraw& s = *sp;
     color(s.leaf ? st.leaf : st.inner);
-    glPushMatrix();
-    glTranslated(s.center.x(), s.center.y(), s.center.z());
-    glScaled(s.radius, s.radius, s.radius);
-    const GpuMesh& m = *impl_->spheres[static_cast<size_t>(lod(s))];
-    m.draw();
-    last_triangles_ += m.num_triangles();
-    glPopMatrix();
+    last_triangles_ +=
+        draw_placed(*impl_->spheres[static_cast<size_t>(lod(s))], s.center, s.radius, s.radius, s.radius);
   }
   glDisable(GL_CULL_FACE);
   // Ground: a square around the point looked at, reaching past the fog; drawn
@@ -188,25 +185,10 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
     glPushMatrix();
     glMultMatrixd(shadow.data());
     for (const SphereDraw& s : view.spheres) {
-      glPushMatrix();
-      glTranslated(s.center.x(), s.center.y(), s.center.z());
-      glScaled(s.radius, s.radius, s.radius);
-      impl_->spheres[2]->draw();
-      glPopMatrix();
+      draw_placed(*impl_->spheres[2], s.center, s.radius, s.radius, s.radius);
     }
-    if (view.show_target) {
-      const double h = st.target_height;
-      glPushMatrix();
-      glTranslated(view.target.x(), view.target.y(), 0);
-      glScaled(0.025 * h, 0.025 * h, h);
-      impl_->cylinder.draw();
-      glPopMatrix();
-      glPushMatrix();
-      glTranslated(view.target.x(), view.target.y(), h);
-      glScaled(0.08 * h, 0.08 * h, 0.08 * h);
-      impl_->spheres[2]->draw();
-      glPopMatrix();
-    }
+    if (view.show_target)
+      draw_target_pole(impl_->cylinder, *impl_->spheres[2], view.target.x(), view.target.y(), st.target_height);
     glPopMatrix();
     glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);

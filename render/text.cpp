@@ -72,6 +72,13 @@ struct Font::Glyph {
 struct Font::Impl {
   FT_Library library = nullptr;
   FT_Face face = nullptr;
+
+  /// Pixels to move the pen between glyphs `prev` (0: none) and `next`.
+  int kerning(unsigned int prev, unsigned int next) const {
+    FT_Vector k;
+    if (prev == 0 || !FT_HAS_KERNING(face) || FT_Get_Kerning(face, prev, next, FT_KERNING_DEFAULT, &k) != 0) return 0;
+    return static_cast<int>(k.x >> 6);
+  }
   std::map<char32_t, Glyph> cache;
   ~Impl() {
     if (face) FT_Done_Face(face);
@@ -124,10 +131,7 @@ int Font::measure(const std::string& utf8) {
   unsigned int prev = 0;
   for (char32_t c : decode_utf8(utf8)) {
     const Glyph& g = glyph(c);
-    if (prev && FT_HAS_KERNING(impl_->face)) {
-      FT_Vector k;
-      if (FT_Get_Kerning(impl_->face, prev, g.index, FT_KERNING_DEFAULT, &k) == 0) x += static_cast<int>(k.x >> 6);
-    }
+    x += impl_->kerning(prev, g.index);
     x += g.advance;
     prev = g.index;
   }
@@ -138,10 +142,7 @@ int Font::draw(Image& image, int x, int baseline, const std::string& utf8, Rgb c
   unsigned int prev = 0;
   for (char32_t c : decode_utf8(utf8)) {
     const Glyph& g = glyph(c);
-    if (prev && FT_HAS_KERNING(impl_->face)) {
-      FT_Vector k;
-      if (FT_Get_Kerning(impl_->face, prev, g.index, FT_KERNING_DEFAULT, &k) == 0) x += static_cast<int>(k.x >> 6);
-    }
+    x += impl_->kerning(prev, g.index);
     for (int y = 0; y < g.rows; ++y)
       for (int gx = 0; gx < g.width; ++gx) {
         const uint8_t a = g.coverage[static_cast<size_t>(y) * g.width + gx];
