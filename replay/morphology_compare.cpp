@@ -4,16 +4,6 @@
 
 namespace robozoo {
 
-namespace {
-
-/// Both sizes of an array must agree with its count before its values are compared.
-template <class V>
-bool sizes_agree(const V& a, const V& b, int32_t n) {
-  return n >= 0 && a.size() == static_cast<size_t>(n) && b.size() == static_cast<size_t>(n);
-}
-
-}  // namespace
-
 bool compare_morphology(const morphology_t& a, const morphology_t& b, ValueComparer& cmp) {
   const int64_t before = cmp.mismatch_count();
   cmp.set_context("morphology");

@@ -2,13 +2,6 @@
 
 namespace robozoo {
 
-namespace {
-template <class V>
-bool sizes_agree(const V& a, const V& b, int32_t n) {
-  return n >= 0 && a.size() == static_cast<size_t>(n) && b.size() == static_cast<size_t>(n);
-}
-}  // namespace
-
 bool compare_pose(const pose_t& a, const pose_t& b, ValueComparer& cmp) {
   const int64_t before = cmp.mismatch_count();
   cmp.set_context("pose", a.step);

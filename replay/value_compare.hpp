@@ -36,6 +36,13 @@ struct FieldRef {
   const char* element = nullptr;
 };
 
+/// True when both arrays of a message hold exactly `n` values (its count field),
+/// so that their values may be compared index by index.
+template <class V>
+bool sizes_agree(const V& a, const V& b, int32_t n) {
+  return n >= 0 && a.size() == static_cast<size_t>(n) && b.size() == static_cast<size_t>(n);
+}
+
 /// Accumulates the comparison of one champion (or one message).
 class ValueComparer {
  public:

@@ -27,27 +27,27 @@ int RobotBuilder::add_root(const Eigen::Vector3d& c, double radius, double densi
   return add(s);
 }
 
-int RobotBuilder::add_fused(int parent, const Eigen::Vector3d& c, double radius, double density,
-                            uint8_t sensors) {
-  if (parent < 0) throw std::invalid_argument("RobotBuilder: a fused sphere needs a parent");
+RobotBuilder::Spec RobotBuilder::child_spec(int parent, const Eigen::Vector3d& c, double radius, double density,
+                                             uint8_t sensors) {
   Spec s;
   s.sphere.parent = parent;
   s.sphere.center = c;
   s.sphere.radius = radius;
   s.sphere.density = density;
   s.sphere.sensors = sensors;
-  return add(s);
+  return s;
+}
+
+int RobotBuilder::add_fused(int parent, const Eigen::Vector3d& c, double radius, double density,
+                            uint8_t sensors) {
+  if (parent < 0) throw std::invalid_argument("RobotBuilder: a fused sphere needs a parent");
+  return add(child_spec(parent, c, radius, density, sensors));
 }
 
 int RobotBuilder::add_jointed(int parent, const Eigen::Vector3d& c, double radius, const Eigen::Vector3d& axis,
                               double range, double tau, double omega, double density, uint8_t sensors) {
   if (parent < 0) throw std::invalid_argument("RobotBuilder: a jointed sphere needs a parent");
-  Spec s;
-  s.sphere.parent = parent;
-  s.sphere.center = c;
-  s.sphere.radius = radius;
-  s.sphere.density = density;
-  s.sphere.sensors = sensors;
+  Spec s = child_spec(parent, c, radius, density, sensors);
   s.sphere.has_joint = true;
   s.sphere.joint_axis = axis.normalized();
   s.sphere.joint_range = range;

@@ -40,6 +40,7 @@ class RobotBuilder {
     double tau = 0.5, omega = 0.0;
   };
   int add(Spec s);
+  static Spec child_spec(int parent, const Eigen::Vector3d& center, double radius, double density, uint8_t sensors);
   std::vector<Spec> spheres_;
 };
 
