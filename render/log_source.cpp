@@ -28,13 +28,10 @@ LoadedLog load_log(const std::string& path, const LoadOptions& options) {
   if (contents.records.empty())
     throw std::runtime_error(path + ": no LCM events in " + std::to_string(st.st_size) +
                              " bytes: not a robozoo-evolve log");
-  int64_t accounted = 0;  // bytes of the complete events, for the message
-  for (const LogRecord& r : contents.records)
-    accounted += 28 + static_cast<int64_t>(r.channel.size()) + static_cast<int64_t>(r.data.size());
   const bool truncated = contents.truncated;
   if (truncated && !options.allow_truncated)
     throw std::runtime_error(path + ": the log is truncated or damaged (" +
-                             std::to_string(static_cast<int64_t>(st.st_size) - accounted) +
+                             std::to_string(contents.file_bytes - contents.event_bytes) +
                              " bytes are not complete events; " + std::to_string(contents.records.size()) +
                              " events are); pass --allow-truncated to use the complete events");
   CollectorOptions co;

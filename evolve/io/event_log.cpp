@@ -88,7 +88,6 @@ LogContents read_event_log(const std::string& path) {
   if (!log) throw io_error(path, "cannot open the event log");
   LogContents out;
   out.file_bytes = st.st_size;
-  int64_t accounted = 0;
   while (lcm_eventlog_event_t* ev = lcm_eventlog_read_next_event(log)) {
     LogRecord r;
     r.eventnum = ev->eventnum;
@@ -96,13 +95,13 @@ LogContents read_event_log(const std::string& path) {
     r.channel.assign(ev->channel, static_cast<size_t>(ev->channellen));
     const auto* d = static_cast<const uint8_t*>(ev->data);
     r.data.assign(d, d + ev->datalen);
-    accounted += kEventHeaderBytes + static_cast<int64_t>(r.channel.size()) + static_cast<int64_t>(r.data.size());
+    out.event_bytes += kEventHeaderBytes + static_cast<int64_t>(r.channel.size()) + static_cast<int64_t>(r.data.size());
     out.records.push_back(std::move(r));
     lcm_eventlog_free_event(ev);
   }
   // LCM's reader stops at a cut last event with the file position at its end,
   // so the position cannot tell; the bytes the complete events take can.
-  out.truncated = accounted != static_cast<int64_t>(st.st_size);
+  out.truncated = out.event_bytes != static_cast<int64_t>(st.st_size);
   lcm_eventlog_destroy(log);
   return out;
 }

@@ -59,6 +59,7 @@ struct LogContents {
   std::vector<LogRecord> records;
   bool truncated = false;   ///< the file holds bytes that are not complete events
   int64_t file_bytes = 0;
+  int64_t event_bytes = 0;  ///< bytes the complete events take, headers included
 };
 LogContents read_event_log(const std::string& path);
 

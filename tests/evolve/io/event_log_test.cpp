@@ -79,6 +79,7 @@ TEST(EventLog, ACutLastEventOrTrailingGarbageIsReported) {
     EXPECT_EQ(c.records.size(), 1u) << "cut at " << cut;
     EXPECT_TRUE(c.truncated) << "cut at " << cut;
     EXPECT_EQ(c.file_bytes, cut);
+    EXPECT_EQ(c.event_bytes, 28 + 1 + 100);
   }
   {
     auto log = EventLogWriter::create(dir / "b.lcmlog");
