@@ -11,7 +11,7 @@
 #include "replay/check.hpp"
 #include "replay/live_sim.hpp"
 #include "replay/player.hpp"
-#include "replay/progress_bar.hpp"
+#include "runlog/progress_bar.hpp"
 
 namespace {
 

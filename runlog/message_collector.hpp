@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "render/run_record.hpp"
+#include "runlog/run_record.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 
 struct CollectorOptions {
   bool keep_poses = true;   ///< store pose_t messages (live mode releases them after use)
@@ -49,11 +49,20 @@ class MessageCollector {
   /// Called when a pose stream is complete (the record may be changed, e.g. to
   /// release its poses).
   using StreamFn = std::function<void(const RunRecord&, GenomeRecord&)>;
+  /// Called after a ROBOZOO_RUN or ROBOZOO_GENERATION was stored (the latest
+  /// one is run.run / run.generations.back()).
+  using RunFn = std::function<void(const RunRecord&)>;
+  /// Called after a pose was accepted into the genome's open stream (it is
+  /// `pose`; stored in genome.poses too when poses are kept).
+  using PoseFn = std::function<void(const RunRecord&, const GenomeRecord&, const pose_t&)>;
 
   explicit MessageCollector(CollectorOptions options = {});
 
   void on_champion(ChampionFn f) { on_champion_ = std::move(f); }
   void on_stream_complete(StreamFn f) { on_stream_ = std::move(f); }
+  void on_run(RunFn f) { on_run_ = std::move(f); }
+  void on_generation(RunFn f) { on_generation_ = std::move(f); }
+  void on_pose(PoseFn f) { on_pose_ = std::move(f); }
 
   /// Takes one message; `source` names where it came from (log path, URL).
   /// Never throws: problems are counted in stats().
@@ -82,6 +91,8 @@ class MessageCollector {
   std::vector<std::unique_ptr<RunRecord>> runs_;
   ChampionFn on_champion_;
   StreamFn on_stream_;
+  RunFn on_run_, on_generation_;
+  PoseFn on_pose_;
 };
 
 /// Checks a morphology's internal consistency (parents, bodies, radii, finite
@@ -90,4 +101,4 @@ std::string morphology_problem(const morphology_t& m);
 /// Checks a pose against its robot's morphology; "" when it fits.
 std::string pose_problem(const pose_t& p, const morphology_t& m);
 
-}  // namespace robozoo::render
+}  // namespace robozoo

@@ -1,4 +1,4 @@
-#include "replay/log_reader.hpp"
+#include "runlog/log_reader.hpp"
 
 #include <sys/stat.h>
 
@@ -118,22 +118,30 @@ ScannedLog scan_event_log_bytes(const std::vector<uint8_t>& b) {
     }
     last_eventnum = r.eventnum;
     have_event = true;
+    out.contents.event_bytes += kHeaderBytes + channellen + datalen;
     out.contents.records.push_back(std::move(r));
     out.offsets.push_back(s);
     pos = s + kHeaderBytes + channellen + datalen;
+    out.end_of_events = pos;
   }
   return out;
 }
 
-ScannedLog scan_event_log(const std::string& path) {
+ScannedLog scan_event_log(const std::string& path) { return scan_event_log_from(path, 0); }
+
+ScannedLog scan_event_log_from(const std::string& path, int64_t offset) {
   struct stat st {};
   errno = 0;
   if (::stat(path.c_str(), &st) != 0)
     throw std::runtime_error(path + ": cannot open the log (" + std::strerror(errno) + ")");
   if (!S_ISREG(st.st_mode)) throw std::runtime_error(path + ": not a regular file");
+  if (offset < 0 || offset > st.st_size)
+    throw std::runtime_error(path + ": is " + std::to_string(st.st_size) + " bytes, shorter than before (" +
+                             std::to_string(offset) + "): not the same log any more");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the log");
-  std::vector<uint8_t> bytes(static_cast<size_t>(st.st_size));
+  in.seekg(offset);
+  std::vector<uint8_t> bytes(static_cast<size_t>(st.st_size - offset));
   in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   if (in.gcount() != static_cast<std::streamsize>(bytes.size()))
     throw std::runtime_error(path + ": cannot read the log (" + std::to_string(in.gcount()) + " of " +

@@ -1,4 +1,4 @@
-#include "replay/log_reader.hpp"
+#include "runlog/log_reader.hpp"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>

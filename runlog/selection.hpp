@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/run_record.hpp"
+#include "runlog/run_record.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 
 /// A champion of a run (genome with its morphology).
 struct Pick {
@@ -30,4 +30,4 @@ std::vector<Pick> genome_by_id(const std::vector<const RunRecord*>& runs, int64_
 /// equal for NEAT's unchanged copies of a champion.
 uint64_t gene_hash(const genome_t& g);
 
-}  // namespace robozoo::render
+}  // namespace robozoo

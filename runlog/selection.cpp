@@ -1,10 +1,10 @@
-#include "render/selection.hpp"
+#include "runlog/selection.hpp"
 
 #include <algorithm>
 #include <cstring>
 #include <set>
 
-namespace robozoo::render {
+namespace robozoo {
 
 namespace {
 void mix(uint64_t& h, uint64_t v) {
@@ -91,4 +91,4 @@ std::vector<Pick> genome_by_id(const std::vector<const RunRecord*>& runs, int64_
   return out;
 }
 
-}  // namespace robozoo::render
+}  // namespace robozoo

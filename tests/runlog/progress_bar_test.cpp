@@ -1,4 +1,4 @@
-#include "replay/progress_bar.hpp"
+#include "runlog/progress_bar.hpp"
 
 #include <gtest/gtest.h>
 

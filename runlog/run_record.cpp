@@ -1,6 +1,6 @@
-#include "render/run_record.hpp"
+#include "runlog/run_record.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 
 const generation_t* RunRecord::generation(int32_t g) const {
   for (auto it = generations.rbegin(); it != generations.rend(); ++it)
@@ -13,4 +13,4 @@ GenomeRecord* RunRecord::find(int64_t genome_id) const {
   return it == by_id.end() ? nullptr : it->second;
 }
 
-}  // namespace robozoo::render
+}  // namespace robozoo

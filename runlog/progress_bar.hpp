@@ -1,7 +1,9 @@
 #pragma once
-// A one-line progress bar for long checks, redrawn in place with '\r' on a
-// terminal. The caller passes the elapsed time, so drawing is a pure function
-// of its inputs (and testable without a clock).
+// The one progress bar of robozoo's log readers (render, replay, view, log): a
+// line redrawn in place with '\r' on a terminal. update() with an elapsed time
+// is a pure function of its inputs (testable without a clock); update() without
+// one measures the time since the bar was made.
+#include <chrono>
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -22,6 +24,8 @@ class ProgressBar {
   ProgressBar(std::ostream& out, std::string label, ProgressBarParams params = {});
   /// Redraws (when enough time passed since the last redraw, or done == total).
   void update(int64_t done, int64_t total, double elapsed_seconds);
+  /// The same, with the time since the bar was made (steady clock).
+  void update(int64_t done, int64_t total);
   /// Clears the line so that the report starts on a clean line.
   void finish();
   int64_t redraws() const { return redraws_; }
@@ -33,6 +37,7 @@ class ProgressBar {
   double last_draw_ = -1e300;
   size_t last_length_ = 0;
   int64_t redraws_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace robozoo

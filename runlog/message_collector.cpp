@@ -1,4 +1,4 @@
-#include "render/message_collector.hpp"
+#include "runlog/message_collector.hpp"
 
 #include <cmath>
 #include <exception>
@@ -6,7 +6,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 
 namespace {
 
@@ -139,6 +139,7 @@ void MessageCollector::handle_run(const void* data, size_t size, const std::stri
   }
   run->run = std::move(m);
   ++stats_.accepted;
+  if (on_run_) on_run_(*run);
 }
 
 void MessageCollector::handle_generation(const void* data, size_t size) {
@@ -154,6 +155,7 @@ void MessageCollector::handle_generation(const void* data, size_t size) {
   close_streams(*run, nullptr);
   run->generations.push_back(std::move(m));
   ++stats_.accepted;
+  if (on_generation_) on_generation_(*run);
 }
 
 void MessageCollector::handle_genome(const void* data, size_t size) {
@@ -226,7 +228,8 @@ void MessageCollector::handle_pose(const void* data, size_t size) {
   g->last_step = m.step;
   if (options_.keep_poses) g->poses.push_back(std::move(m));
   ++stats_.accepted;
+  if (on_pose_) on_pose_(*run, *g, options_.keep_poses ? g->poses.back() : m);
   if (g->last_step >= run->run.steps) complete(*run, *g);
 }
 
-}  // namespace robozoo::render
+}  // namespace robozoo

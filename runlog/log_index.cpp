@@ -1,4 +1,4 @@
-#include "replay/log_index.hpp"
+#include "runlog/log_index.hpp"
 
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"

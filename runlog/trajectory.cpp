@@ -1,4 +1,4 @@
-#include "render/trajectory.hpp"
+#include "runlog/trajectory.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +11,9 @@
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "runlog/selection.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 
 std::vector<Eigen::Vector3d> Trajectory::sample(double t) const {
   if (empty()) throw std::logic_error("Trajectory::sample on an empty trajectory");
@@ -42,6 +43,8 @@ Trajectory trajectory_from_poses(const std::vector<pose_t>& poses, size_t num_sp
     c.reserve(num_spheres);
     for (const auto& v : p.sphere_center) c.emplace_back(v[0], v[1], v[2]);
     tr.centers.push_back(std::move(c));
+    tr.neurons.push_back(p.neuron_output);
+    tr.sensors.push_back(p.sensor_value);
   }
   return tr;
 }
@@ -73,6 +76,8 @@ Trajectory simulate_trajectory(const run_t& run, const genome_t& genome, const m
     tr.step.push_back(s.step);
     tr.time.push_back(s.time);
     tr.centers.push_back(s.sphere_center);
+    tr.neurons.push_back(s.neuron_output);
+    tr.sensors.push_back(s.sensor_value);
   };
   keep();
   while (sim.step())
@@ -81,4 +86,32 @@ Trajectory simulate_trajectory(const run_t& run, const genome_t& genome, const m
   return tr;
 }
 
-}  // namespace robozoo::render
+Trajectory genome_trajectory(const RunRecord& run, const GenomeRecord& genome, bool resimulate, int every) {
+  if (!genome.has_morphology)
+    throw std::invalid_argument("genome " + std::to_string(genome.genome.genome_id) + " has no logged morphology");
+  if (!resimulate)
+    if (const GenomeRecord* source = logged_pose_source(run, genome))
+      return trajectory_from_poses(source->poses, genome.morphology.spheres.size());
+  return simulate_trajectory(run.run, genome.genome, genome.morphology, every);
+}
+
+const GenomeRecord* logged_pose_source(const RunRecord& run, const GenomeRecord& genome) {
+  if (!genome.poses.empty()) return &genome;
+  const uint64_t genes = gene_hash(genome.genome);
+  for (const auto& other : run.genomes)
+    if (other.get() != &genome && !other->poses.empty() && other->has_morphology &&
+        other->morphology.num_spheres == genome.morphology.num_spheres && gene_hash(other->genome) == genes)
+      return other.get();
+  return nullptr;
+}
+
+Eigen::Vector3d run_target(const run_t& run) {
+  try {
+    const RunConfig c = config_from_json(nlohmann::json::parse(run.config_json));
+    return {c.eval.sim.target_x, c.eval.sim.target_y, c.eval.sim.target_z};
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("run " + run.run_id + ": cannot read its configuration: " + e.what());
+  }
+}
+
+}  // namespace robozoo

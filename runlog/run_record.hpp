@@ -1,5 +1,5 @@
 #pragma once
-// What robozoo-render knows about runs: the ROBOZOO_* messages of each run,
+// What a program knows about runs: the ROBOZOO_* messages of each run,
 // gathered by MessageCollector from a log or the bus.
 #include <cstdint>
 #include <map>
@@ -13,7 +13,7 @@
 #include "robozoo/pose_t.hpp"
 #include "robozoo/run_t.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 
 /// A published genome and what arrived with it.
 struct GenomeRecord {
@@ -41,4 +41,4 @@ struct RunRecord {
   GenomeRecord* find(int64_t genome_id) const;
 };
 
-}  // namespace robozoo::render
+}  // namespace robozoo

@@ -1,13 +1,13 @@
-#include "render/log_source.hpp"
+#include "runlog/log_source.hpp"
 
 #include <sys/stat.h>
 
 #include <sstream>
 #include <stdexcept>
 
-#include "evolve/io/event_log.hpp"
+#include "runlog/log_reader.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 
 std::vector<const RunRecord*> LoadedLog::runs() const {
   std::vector<const RunRecord*> out;
@@ -19,19 +19,20 @@ LoadedLog load_log(const std::string& path, const LoadOptions& options) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) throw std::runtime_error(path + ": no such log file");
   if (!S_ISREG(st.st_mode)) throw std::runtime_error(path + ": not a regular file");
-  LogContents contents;
+  ScannedLog scanned;
   try {
-    contents = read_event_log(path);
+    scanned = scan_event_log(path);
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": cannot read the log: " + e.what());
   }
+  const LogContents& contents = scanned.contents;
   if (contents.records.empty())
     throw std::runtime_error(path + ": no LCM events in " + std::to_string(st.st_size) +
                              " bytes: not a robozoo-evolve log");
-  const bool truncated = contents.truncated;
+  const bool truncated = scanned.damaged_bytes() > 0;
   if (truncated && !options.allow_truncated)
     throw std::runtime_error(path + ": the log is truncated or damaged (" +
-                             std::to_string(contents.file_bytes - contents.event_bytes) +
+                             std::to_string(scanned.damaged_bytes()) +
                              " bytes are not complete events; " + std::to_string(contents.records.size()) +
                              " events are); pass --allow-truncated to use the complete events");
   CollectorOptions co;
@@ -39,6 +40,7 @@ LoadedLog load_log(const std::string& path, const LoadOptions& options) {
   LoadedLog log;
   log.path = path;
   log.truncated = truncated;
+  log.damage = scanned.damage;
   log.collector = std::make_unique<MessageCollector>(co);
   for (const LogRecord& r : contents.records) log.collector->ingest(r.channel, r.data.data(), r.data.size(), path);
   log.collector->close_open_streams();
@@ -61,4 +63,4 @@ std::string describe(const LoadedLog& log) {
   return o.str();
 }
 
-}  // namespace robozoo::render
+}  // namespace robozoo

@@ -1,21 +1,21 @@
-#include "render/trajectory.hpp"
+#include "runlog/trajectory.hpp"
 
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>
 
-#include "render/log_source.hpp"
+#include "runlog/log_source.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 namespace {
 
 using robozoo::testing::TempDir;
 
 TEST(Trajectory, InterpolatesBetweenPosesAndClampsAtTheEnds) {
   const Trajectory t = trajectory_from_poses(
-      {testing::pose_message("r", 0, 1, 0, 0.0), testing::pose_message("r", 0, 1, 10, 1.0)}, 4);
+      {render::testing::pose_message("r", 0, 1, 0, 0.0), render::testing::pose_message("r", 0, 1, 10, 1.0)}, 4);
   EXPECT_DOUBLE_EQ(t.start_time(), 0.0);
   EXPECT_DOUBLE_EQ(t.end_time(), 0.1);
   EXPECT_NEAR(t.sample(0.05)[0].x(), 0.5, 1e-12);
@@ -26,15 +26,15 @@ TEST(Trajectory, InterpolatesBetweenPosesAndClampsAtTheEnds) {
 
 TEST(Trajectory, RejectsBadStreams) {
   EXPECT_THROW(trajectory_from_poses({}, 4), std::invalid_argument);
-  EXPECT_THROW(trajectory_from_poses({testing::pose_message("r", 0, 1, 0, 0, 3)}, 4), std::invalid_argument);
-  EXPECT_THROW(trajectory_from_poses({testing::pose_message("r", 0, 1, 5), testing::pose_message("r", 0, 1, 5)}, 4),
+  EXPECT_THROW(trajectory_from_poses({render::testing::pose_message("r", 0, 1, 0, 0, 3)}, 4), std::invalid_argument);
+  EXPECT_THROW(trajectory_from_poses({render::testing::pose_message("r", 0, 1, 5), render::testing::pose_message("r", 0, 1, 5)}, 4),
                std::invalid_argument);
 }
 
 // Re-simulation with the shared code reproduces the logged poses bit for bit.
 TEST(Trajectory, ResimulationMatchesTheLoggedPoses) {
   TempDir dir;
-  testing::write_small_run(dir / "run.lcmlog");
+  render::testing::write_small_run(dir / "run.lcmlog");
   const LoadedLog log = load_log(dir / "run.lcmlog");
   const RunRecord& run = *log.runs()[0];
   int checked = 0;
@@ -57,7 +57,7 @@ TEST(Trajectory, ResimulationMatchesTheLoggedPoses) {
 
 TEST(Trajectory, ResimulationRefusesAnotherRobot) {
   TempDir dir;
-  testing::write_small_run(dir / "run.lcmlog");
+  render::testing::write_small_run(dir / "run.lcmlog");
   const LoadedLog log = load_log(dir / "run.lcmlog");
   const RunRecord& run = *log.runs()[0];
   const GenomeRecord& g = *run.genomes.back();
@@ -70,4 +70,4 @@ TEST(Trajectory, ResimulationRefusesAnotherRobot) {
 }
 
 }  // namespace
-}  // namespace robozoo::render
+}  // namespace robozoo

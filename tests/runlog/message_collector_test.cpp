@@ -1,10 +1,10 @@
-#include "render/message_collector.hpp"
+#include "runlog/message_collector.hpp"
 
 #include <gtest/gtest.h>
 
 #include "tests/render/messages.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 namespace {
 
 using namespace robozoo::render::testing;
@@ -166,4 +166,4 @@ TEST(MessageCollector, OtherChannelsAreIgnored) {
 }
 
 }  // namespace
-}  // namespace robozoo::render
+}  // namespace robozoo

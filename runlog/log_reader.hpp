@@ -1,6 +1,7 @@
 #pragma once
 // Reading an LCM event log (lcm-logger's format, the one robozoo-evolve writes)
-// and saying exactly where it is damaged.
+// and saying exactly where it is damaged: the reader behind every program that
+// reads robozoo logs (render, replay, view, log).
 //
 // LCM's own reader (lcm_eventlog_read_next_event, used by evolve's
 // read_event_log) says nothing about what it skipped: LCM 1.3.1 stops at the
@@ -30,9 +31,13 @@ struct LogDamage {
 };
 
 struct ScannedLog {
-  LogContents contents;            ///< the events that could be read, in file order
+  LogContents contents;            ///< the events that could be read, in file order; event_bytes is
+                                   ///< what they take, truncated says the last event is cut
   std::vector<int64_t> offsets;    ///< byte offset of each event's sync word (parallel to records)
   std::vector<LogDamage> damage;   ///< in file order; empty for an intact log
+  int64_t end_of_events = 0;       ///< byte offset just after the last complete event (bytes)
+  /// Bytes of the file that are no complete event (garbage and a cut last event).
+  int64_t damaged_bytes() const { return contents.file_bytes - contents.event_bytes; }
 };
 
 /// The LCM log sync word, big-endian on disk.
@@ -43,5 +48,8 @@ ScannedLog scan_event_log_bytes(const std::vector<uint8_t>& bytes);
 /// Reads and parses the file at `path`; throws std::runtime_error naming the path
 /// when it cannot be read.
 ScannedLog scan_event_log(const std::string& path);
+/// The same for the bytes from `offset` to the end (a log that grows: offsets,
+/// damage and end_of_events are counted from `offset`).
+ScannedLog scan_event_log_from(const std::string& path, int64_t offset);
 
 }  // namespace robozoo

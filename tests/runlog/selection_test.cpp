@@ -1,11 +1,11 @@
-#include "render/selection.hpp"
+#include "runlog/selection.hpp"
 
 #include <gtest/gtest.h>
 
-#include "render/message_collector.hpp"
+#include "runlog/message_collector.hpp"
 #include "tests/render/messages.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 namespace {
 
 using namespace robozoo::render::testing;
@@ -65,4 +65,4 @@ TEST(Selection, GeneHashIgnoresIdsAndScores) {
 }
 
 }  // namespace
-}  // namespace robozoo::render
+}  // namespace robozoo

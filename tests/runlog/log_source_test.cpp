@@ -1,4 +1,4 @@
-#include "render/log_source.hpp"
+#include "runlog/log_source.hpp"
 
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"
 
-namespace robozoo::render {
+namespace robozoo {
 namespace {
 
 using robozoo::testing::TempDir;
@@ -26,7 +26,7 @@ std::string error_of(const std::string& path, LoadOptions o = {}) {
 
 TEST(LogSource, ReadsARealRun) {
   TempDir dir;
-  testing::write_small_run(dir / "run.lcmlog");
+  render::testing::write_small_run(dir / "run.lcmlog");
   const LoadedLog log = load_log(dir / "run.lcmlog");
   ASSERT_EQ(log.runs().size(), 1u);
   const RunRecord& run = *log.runs()[0];
@@ -52,7 +52,7 @@ TEST(LogSource, MissingTruncatedAndForeignFiles) {
   EXPECT_NE(error_of(dir / "none.lcmlog").find("no such log file"), std::string::npos);
   EXPECT_NE(error_of(dir.path).find("not a regular file"), std::string::npos);
 
-  testing::write_small_run(dir / "run.lcmlog");
+  render::testing::write_small_run(dir / "run.lcmlog");
   const auto size = std::filesystem::file_size(dir / "run.lcmlog");
   std::filesystem::copy_file(dir / "run.lcmlog", dir / "cut.lcmlog");
   std::filesystem::resize_file(dir / "cut.lcmlog", size - 100);
@@ -79,10 +79,10 @@ TEST(LogSource, BadMessagesInALogAreCountedNotFatal) {
   TempDir dir;
   {
     EventLogWriter w = EventLogWriter::create(dir / "bad.lcmlog");
-    testing::append(w, kChannelRun, testing::run_message("r"));
+    render::testing::append(w, kChannelRun, render::testing::run_message("r"));
     w.write(kChannelGenome, {1, 2, 3}, 0);
-    testing::append(w, kChannelGenome, testing::genome_message("r", 0, 5, 15.0));
-    testing::append(w, kChannelMorphology, testing::morphology_message("r", 0, 5));
+    render::testing::append(w, kChannelGenome, render::testing::genome_message("r", 0, 5, 15.0));
+    render::testing::append(w, kChannelMorphology, render::testing::morphology_message("r", 0, 5));
     w.sync();
   }
   const LoadedLog log = load_log(dir / "bad.lcmlog");
@@ -92,4 +92,4 @@ TEST(LogSource, BadMessagesInALogAreCountedNotFatal) {
 }
 
 }  // namespace
-}  // namespace robozoo::render
+}  // namespace robozoo

@@ -1,4 +1,4 @@
-#include "replay/progress_bar.hpp"
+#include "runlog/progress_bar.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -43,6 +43,10 @@ void ProgressBar::update(int64_t done, int64_t total, double elapsed_seconds) {
   out_ << '\r' << s << std::string(last_length_ > s.size() ? last_length_ - s.size() : 0, ' ') << std::flush;
   last_length_ = s.size();
   ++redraws_;
+}
+
+void ProgressBar::update(int64_t done, int64_t total) {
+  update(done, total, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
 }
 
 void ProgressBar::finish() {

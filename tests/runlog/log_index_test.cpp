@@ -1,4 +1,4 @@
-#include "replay/log_index.hpp"
+#include "runlog/log_index.hpp"
 
 #include <gtest/gtest.h>
 
