@@ -36,9 +36,9 @@ nlohmann::json fields(const generation_t& m) {
           {"generation_seconds", m.generation_seconds}};
 }
 
-nlohmann::json fields(const genome_t& m) {
+nlohmann::json fields(const cppn_genome_t& m) {
   nlohmann::json nodes = nlohmann::json::array(), links = nlohmann::json::array();
-  for (const node_t& n : m.nodes) nodes.push_back({{"id", n.id}, {"kind", n.kind}, {"activation", n.activation}});
+  for (const cppn_node_t& n : m.nodes) nodes.push_back({{"id", n.id}, {"kind", n.kind}, {"activation", n.activation}, {"position", n.position}});
   for (const link_t& l : m.links)
     links.push_back({{"innovation", l.innovation},
                      {"from_node", l.from_node},
@@ -116,7 +116,7 @@ bool message_to_json(const std::string& channel, const void* data, size_t size, 
   why.clear();
   if (channel == kChannelRun) return convert<run_t>(data, size, out, why);
   if (channel == kChannelGeneration) return convert<generation_t>(data, size, out, why);
-  if (channel == kChannelGenome) return convert<genome_t>(data, size, out, why);
+  if (channel == kChannelGenome) return convert<cppn_genome_t>(data, size, out, why);
   if (channel == kChannelMorphology) return convert<morphology_t>(data, size, out, why);
   if (channel == kChannelPose) return convert<pose_t>(data, size, out, why);
   return false;

@@ -21,6 +21,7 @@
 #include "evolve/growth/growth.hpp"
 #include "evolve/neat/random_genome.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "evolve/core/version.hpp"
 
 using namespace robozoo;
 using Clock = std::chrono::steady_clock;
@@ -138,6 +139,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-draws", max_draws, "give up after drawing this many genomes per regime");
   app.add_option("--config", config_file, "configuration file (.json or .toml)");
   app.add_flag("--json", json, "print the figures as JSON");
+  app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
   RunConfig config;
   try {

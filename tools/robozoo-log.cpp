@@ -5,6 +5,7 @@
 
 #include <iostream>
 
+#include "evolve/core/version.hpp"
 #include "runlog/log_cat.hpp"
 #include "runlog/log_reader.hpp"
 #include "runlog/log_summary.hpp"
@@ -12,6 +13,7 @@
 int main(int argc, char** argv) {
   using namespace robozoo;
   CLI::App app{"robozoo-log: what a robozoo log holds, for the terminal and for scripts."};
+  app.set_version_flag("--version", robozoo::version_line());
   app.require_subcommand(1);
   std::string log;
   bool json = false;

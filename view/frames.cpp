@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "evolve/core/version.hpp"
 #include "runlog/leaf_spheres.hpp"
 
 namespace robozoo::view {
@@ -32,7 +33,7 @@ nlohmann::json flat_points(const Points& pts) {
 Frame make_frame(const nlohmann::json& j) { return std::make_shared<const std::string>(j.dump()); }
 
 nlohmann::json hello_json(const std::string& mode, const std::string& source) {
-  return {{"t", "hello"}, {"mode", mode}, {"source", source}, {"version", ROBOZOO_VERSION}};
+  return {{"t", "hello"}, {"mode", mode}, {"source", source}, {"version", software_version_string()}};
 }
 
 nlohmann::json run_json(const run_t& run, const double target[3]) {
@@ -68,11 +69,11 @@ nlohmann::json generation_json(const generation_t& g) {
             {"rolling_spin", g.n_rolling_spin}}}};
 }
 
-nlohmann::json champion_json(const genome_t& g) {
+nlohmann::json champion_json(const cppn_genome_t& g) {
   return {{"t", "champion"}, {"id", g.genome_id}, {"gen", g.generation}, {"fitness", g.fitness}};
 }
 
-nlohmann::json robot_json(const genome_t& g, const morphology_t& m, bool live, bool replay) {
+nlohmann::json robot_json(const cppn_genome_t& g, const morphology_t& m, bool live, bool replay) {
   nlohmann::json radius = nlohmann::json::array(), leaf = nlohmann::json::array(), start = nlohmann::json::array(),
                  types = nlohmann::json::array();
   const std::vector<bool> leaves = leaf_spheres(m);

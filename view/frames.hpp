@@ -22,7 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "robozoo/generation_t.hpp"
-#include "robozoo/genome_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
 #include "robozoo/run_t.hpp"
@@ -39,8 +39,8 @@ nlohmann::json hello_json(const std::string& mode, const std::string& source);
 /// `target`: the run's target position (m).
 nlohmann::json run_json(const run_t& run, const double target[3]);
 nlohmann::json generation_json(const generation_t& g);
-nlohmann::json champion_json(const genome_t& g);
-nlohmann::json robot_json(const genome_t& g, const morphology_t& m, bool live, bool replay);
+nlohmann::json champion_json(const cppn_genome_t& g);
+nlohmann::json robot_json(const cppn_genome_t& g, const morphology_t& m, bool live, bool replay);
 nlohmann::json pose_json(const pose_t& p);
 /// Samples of a trajectory (no utime: not published live).
 nlohmann::json trajectory_json(int64_t genome_id, const Trajectory& t);

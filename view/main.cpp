@@ -6,6 +6,7 @@
 
 #include <iostream>
 
+#include "evolve/core/version.hpp"
 #include "evolve/io/bus.hpp"
 #include "view/assets.hpp"
 #include "view/bus_feed.hpp"
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
       "  robozoo-view --lcm-url [URL]                 follow a live run (robozoo-evolve --lcm-url)\n"
       "  robozoo-view LOG [--speed S] [--loop | --follow] [--generation G]   play a log\n"
       "then open the address it prints (http://127.0.0.1:8080/ by default)."};
+  app.set_version_flag("--version", robozoo::version_line());
   Args a;
   app.add_option("LOG", a.log.path, "a log written by robozoo-evolve (or lcm-logger)");
   app.add_option("--lcm-url", a.lcm_url, "follow the run live on this LCM URL (given alone: LCM's default URL)")

@@ -58,7 +58,7 @@ struct ViewCounters {
 struct ReplayPlan {
   std::vector<Frame> frames;           ///< ready: the robot, then its poses
   std::optional<run_t> run;            ///< to re-simulate: the run,
-  std::optional<genome_t> genome;      ///< the genome
+  std::optional<cppn_genome_t> genome;      ///< the genome
   std::optional<morphology_t> morphology;  ///< and its logged morphology (checked against the re-grown robot)
   std::string error;                   ///< set when the genome is unknown
 };

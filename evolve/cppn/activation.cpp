@@ -11,6 +11,7 @@ std::string activation_name(Activation a) {
     case Activation::Gaussian: return "gaussian";
     case Activation::Linear: return "linear";
     case Activation::Sine: return "sine";
+    case Activation::SteepenedSigmoid: return "steepened_sigmoid";
   }
   return "unknown";
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Querying the robot CPPN at a point (DESIGN.md section 2: inputs x, y, z,
+// Querying the robot CPPN at a point (docs/method.md section 2: inputs x, y, z,
 // r_parent, bias, four sensor one-hots; eleven outputs). Allocation-free.
 #include <array>
 

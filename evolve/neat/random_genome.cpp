@@ -8,7 +8,7 @@ namespace robozoo {
 
 Genome random_evolved_genome(const GenomeLayout& layout, Regime regime, const NeatParams& neat,
                              const RandomGenomeParams& params, Rng& rng, int64_t id) {
-  Genome g = initial_genome(layout, id, neat, rng);
+  Genome g = initial_genome(layout, id, neat, regime, rng);
   InnovationTracker innov(first_free_innovation(layout), layout.first_hidden());
   for (int round = 0; round < params.rounds; ++round) {
     innov.new_generation();

@@ -1,6 +1,5 @@
 #pragma once
-// Random genomes as evolution makes them: an initial genome (every input linked
-// to every output) followed by rounds of NEAT mutations. Used to look at single
+// Random genomes as evolution makes them: the regime's initial genome followed by rounds of NEAT mutations. Used to look at single
 // robots (robozoo-evolve eval) and by the benchmark, so that the genomes grow
 // real robots rather than the root alone.
 #include "evolve/core/rng.hpp"

@@ -35,7 +35,7 @@ void generation(ViewState& s, int g, bool poses, int64_t genome = -1) {
   if (genome < 0) genome = 10 + g;
   send(s, kChannelRun, run_message("r", 100));
   send(s, kChannelGeneration, generation_message("r", g, genome));
-  genome_t gm = genome_message("r", g, genome, 15.0 + g);
+  cppn_genome_t gm = genome_message("r", g, genome, 15.0 + g);
   gm.num_links = 1;  // distinct genes per genome: a new champion each time
   gm.links = {link_t{}};
   gm.links[0].innovation = genome;
