@@ -92,7 +92,9 @@ void play_log(const LogFeedOptions& o, ViewState& state, const std::function<boo
             first = e.record;
             break;
           }
+        state.set_quiet(true);  // pages get the result at once, not every pose of it
         for (size_t i = 0; i < first; ++i) publish(contents.records[i].channel, contents.records[i].data);
+        state.set_quiet(false);
       }
       log << "robozoo-view: playing " << o.path << (pass > 0 ? " again" : "") << std::endl;
       play(contents, index, po, clock, publish);

@@ -61,7 +61,16 @@ void ViewState::push_locked(Client& c, const Frame& f, bool is_pose) {
 }
 
 void ViewState::broadcast_locked(const Frame& f, bool is_pose) {
+  if (quiet_) return;
   for (const auto& c : clients_) push_locked(*c, f, is_pose);
+}
+
+void ViewState::set_quiet(bool quiet) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const bool was = quiet_;
+  quiet_ = quiet;
+  if (was && !quiet)
+    for (const auto& c : clients_) push_snapshot_locked(*c);
 }
 
 void ViewState::handle_run(const RunRecord& run) {
@@ -131,23 +140,25 @@ void ViewState::handle_stream_end(const RunRecord& run, GenomeRecord& g) {
   }
 }
 
+void ViewState::push_snapshot_locked(Client& c) {
+  push_locked(c, make_frame(hello_json(mode_, source_)), false);
+  if (run_frame_.is_null()) return;
+  push_locked(c, make_frame(run_frame_), false);
+  push_locked(c, make_frame({{"t", "history"}, {"gens", history_}}), false);
+  push_locked(c, make_frame({{"t", "champions"}, {"list", champions_}}), false);
+  if (robot_frame_.is_null()) return;
+  push_locked(c, make_frame(robot_frame_), false);
+  push_locked(c,
+              make_frame({{"t", "poses"}, {"id", shown_id_}, {"list", shown_poses_}, {"done", shown_done_},
+                          {"resimulated", false}}),
+              false);
+}
+
 std::shared_ptr<Client> ViewState::join(std::function<void()> wake) {
   std::lock_guard<std::mutex> lock(mutex_);
   auto c = std::make_shared<Client>(options_.queue);
   c->id = next_client_++;
-  push_locked(*c, make_frame(hello_json(mode_, source_)), false);
-  if (!run_frame_.is_null()) {
-    push_locked(*c, make_frame(run_frame_), false);
-    push_locked(*c, make_frame({{"t", "history"}, {"gens", history_}}), false);
-    push_locked(*c, make_frame({{"t", "champions"}, {"list", champions_}}), false);
-    if (!robot_frame_.is_null()) {
-      push_locked(*c, make_frame(robot_frame_), false);
-      push_locked(*c,
-                  make_frame({{"t", "poses"}, {"id", shown_id_}, {"list", shown_poses_}, {"done", shown_done_},
-                              {"resimulated", false}}),
-                  false);
-    }
-  }
+  push_snapshot_locked(*c);
   c->wake = std::move(wake);
   clients_.push_back(c);
   if (c->wake) c->wake();

@@ -74,6 +74,10 @@ class ViewState {
   void end_of_input() noexcept;
   /// Forgets everything (a log played again with --loop); pages start over.
   void restart();
+  /// While quiet, messages update the state but nothing goes to the pages
+  /// (a log's first generations taken in at once); when it ends, every page
+  /// gets the whole state again, as if it had just joined.
+  void set_quiet(bool quiet);
 
   /// Registers a page: its queue gets the whole state first.
   std::shared_ptr<Client> join(std::function<void()> wake);
@@ -93,6 +97,7 @@ class ViewState {
  private:
   void reset_run_locked();
   void broadcast_locked(const Frame& f, bool is_pose);
+  void push_snapshot_locked(Client& c);
   void push_locked(Client& c, const Frame& f, bool is_pose);
   void handle_run(const RunRecord& run);
   void handle_generation(const RunRecord& run);
@@ -118,6 +123,7 @@ class ViewState {
   std::vector<GenomeRecord*> completed_;  ///< streams with poses kept, oldest first
   std::vector<std::shared_ptr<Client>> clients_;
   int64_t next_client_ = 1;
+  bool quiet_ = false;
   int64_t poses_ = 0, dropped_by_departed_ = 0, given_up_ = 0;
 };
 

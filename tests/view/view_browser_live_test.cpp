@@ -12,7 +12,11 @@
 #include <boost/beast/websocket.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
 #include <regex>
 #include <thread>
 
@@ -108,15 +112,25 @@ std::vector<int> generations_in(const std::string& log) {
   return g;
 }
 
+/// What the page says about itself (robozooView.stats() in view.js); null before it runs.
+nlohmann::json page_stats(HeadlessBrowser& browser, const std::string& session) {
+  return browser.evaluate(session, "window.robozooView ? robozooView.stats() : null");
+}
+
+/// The page has its first frame from the server.
+bool page_connected(HeadlessBrowser& browser, const std::string& session) {
+  const auto j = page_stats(browser, session);
+  return !j.is_null() && j["framesReceived"] >= 1;
+}
+
 TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   IN_NAMESPACE();
   TempDir dir;
   const pid_t view = start_view(dir);
   HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
   const std::string a = browser.open(kPage);
-  auto stats = [&](const std::string& s) { return browser.evaluate(s, "window.robozooView ? robozooView.stats() : null"); };
-  ASSERT_TRUE(wait_for([&] { const auto j = stats(a); return !j.is_null() && j["framesReceived"] >= 1; }, 30))
-      << read_file(dir / "chromium.txt");
+  auto stats = [&](const std::string& s) { return page_stats(browser, s); };
+  ASSERT_TRUE(wait_for([&] { return page_connected(browser, a); }, 30)) << read_file(dir / "chromium.txt");
 
   const std::vector<std::string> size = {"--seed", "7", "--population", "24", "--generations", "6",
                                          "--steps", "600", "--quiet"};
@@ -225,6 +239,153 @@ TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
   EXPECT_GT(dropped, published / 2) << out;  // the stuck page took at most its queue and socket buffers
   EXPECT_EQ(gens, 4);
   EXPECT_GT(poses, 0);
+}
+
+/// A log of one hand-made robot of `n` spheres (a chain with side branches)
+/// whose spheres sway, `steps` steps of 0.01 s with a pose every 4: what the
+/// page draws costs the same for it as for an evolved robot of n spheres.
+void write_swaying_robot(const std::string& path, int n, int steps) {
+  using namespace render::testing;
+  EventLogWriter w = EventLogWriter::create(path);
+  run_t run = run_message("sway", steps);
+  append(w, kChannelRun, run);
+  append(w, kChannelGeneration, generation_message("sway", 0, 1));
+  append(w, kChannelGenome, genome_message("sway", 0, 1, 20.0));
+  morphology_t m{};
+  m.run_id = "sway";
+  m.genome_id = 1;
+  for (int i = 0; i < n; ++i) {
+    sphere_t s{};
+    s.index = i;
+    s.parent = i == 0 ? -1 : (i % 3 == 0 ? i - 2 : i - 1);
+    s.radius = 0.08 + 0.04 * (i % 4);
+    s.center[0] = 0.25 * (i / 3);
+    s.center[1] = 0.3 * (i % 3) - 0.3;
+    s.center[2] = 0.5;
+    s.density = 1.0;
+    m.spheres.push_back(s);
+  }
+  m.num_spheres = n;
+  m.num_bodies = 1;
+  append(w, kChannelMorphology, m);
+  for (int step = 0; step <= steps; step += 4) {
+    pose_t p{};
+    p.run_id = "sway";
+    p.genome_id = 1;
+    p.step = step;
+    p.sim_time = 0.01 * step;
+    p.num_bodies = 1;
+    p.body_position = {{0, 0, 0.5}};
+    p.body_quaternion = {{1, 0, 0, 0}};
+    p.num_spheres = n;
+    for (int i = 0; i < n; ++i) {
+      const sphere_t& s = m.spheres[static_cast<size_t>(i)];
+      const double phase = p.sim_time * 3.0 + 0.3 * i;
+      p.sphere_center.push_back({s.center[0] + 0.1 * p.sim_time, s.center[1] + 0.1 * std::sin(phase),
+                                 s.center[2] + 0.1 * std::cos(phase)});
+    }
+    append(w, kChannelPose, p, 1000);
+  }
+  w.sync();
+}
+
+/// Frames the page draws per second over `seconds`, counted in the page.
+double page_frame_rate(HeadlessBrowser& browser, const std::string& session, double seconds) {
+  const std::string ms = std::to_string(static_cast<int>(seconds * 1000));
+  return browser
+      .evaluate(session, "new Promise((done) => { let n = 0; const t0 = performance.now();"
+                         " const f = () => { n++; if (performance.now() - t0 < " + ms + ") requestAnimationFrame(f);"
+                         " else done(n * 1000 / (performance.now() - t0)); }; requestAnimationFrame(f); })")
+      .get<double>();
+}
+
+TEST(ViewBrowser, FrameRateOfAFiftySphereRobot) {
+  IN_NAMESPACE();
+  TempDir dir;
+  // ROBOZOO_VIEW_FPS_LOG and ROBOZOO_VIEW_FPS_GENERATION measure a real log instead (README's figure).
+  const char* real = std::getenv("ROBOZOO_VIEW_FPS_LOG");
+  std::string log = dir / "sway.lcmlog";
+  std::vector<std::string> args = {bin("robozoo-view"), "--port", "8080", "--loop"};
+  if (real) {
+    log = real;
+    const char* g = std::getenv("ROBOZOO_VIEW_FPS_GENERATION");
+    if (g) args.insert(args.end(), {"--generation", g});
+  } else {
+    write_swaying_robot(log, 50, 2500);
+  }
+  args.insert(args.begin() + 1, log);
+  const pid_t view = spawn(args, dir / "view.txt");
+  ASSERT_TRUE(wait_for([&] { return read_file(dir / "view.txt").find("open http") != std::string::npos; }, 20))
+      << read_file(dir / "view.txt");
+  HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
+  const std::string a = browser.open(kPage);
+  auto stats = [&] { return page_stats(browser, a); };
+  ASSERT_TRUE(wait_for([&] { const auto j = stats(); return !j.is_null() && j["spheres"] >= 40 && j["samples"] > 50; }, 60))
+      << stats().dump();
+  const double fps = page_frame_rate(browser, a, 4.0);
+  const auto j = stats();
+  std::cout << "frame rate: " << fps << " frames/s for a " << j["spheres"] << "-sphere robot (page "
+            << j["canvas"]["width"] << "x" << j["canvas"]["height"] << " canvas, software WebGL)\n";
+  RecordProperty("fps", std::to_string(fps));
+  EXPECT_GE(fps, 15.0);  // the aim is 30; below 15 the page has become too slow to watch
+  kill_process(view, SIGTERM);
+  EXPECT_EQ(wait_status(view), 0);
+}
+
+/// CPU seconds (user + system) a process has used so far.
+double cpu_seconds(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::istringstream rest(all.substr(all.rfind(')') + 2));
+  std::vector<std::string> f;
+  for (std::string x; rest >> x;) f.push_back(x);
+  return (std::stod(f.at(11)) + std::stod(f.at(12))) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+}
+
+TEST(ViewBrowser, LatencyAndServerCpuWhileEvolvePublishes) {
+  IN_NAMESPACE();
+  TempDir dir;
+  const pid_t view = start_view(dir);
+  HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
+  const std::string a = browser.open(kPage);
+  ASSERT_TRUE(wait_for([&] { return page_connected(browser, a); }, 30)) << read_file(dir / "chromium.txt");
+  // ROBOZOO_VIEW_MEASURE_ARGS: other evolve sizes for the README's figures.
+  std::vector<std::string> size = {"--seed", "7", "--population", "24", "--generations", "6", "--steps", "600", "--quiet"};
+  if (const char* e = std::getenv("ROBOZOO_VIEW_MEASURE_ARGS")) {
+    size.clear();
+    std::istringstream in(e);
+    for (std::string w; in >> w;) size.push_back(w);
+  }
+  const double cpu0 = cpu_seconds(view);
+  const auto t0 = Clock::now();
+  const pid_t evolve = spawn(evolve_args(dir / "run.lcmlog", 2, {"--lcm-url", kUrl}, size), dir / "evolve.txt");
+  std::map<int64_t, double> latency;  // per shown robot: publication of its first pose -> drawn (ms)
+  int status = -1;
+  while (true) {
+    const auto j = browser.evaluate(a, "robozooView.stats()");
+    if (j["robot"].is_number() && j["firstPoseLatencyMs"].is_number())
+      latency.emplace(j["robot"].get<int64_t>(), j["firstPoseLatencyMs"].get<double>());
+    int st = 0;
+    if (::waitpid(evolve, &st, WNOHANG) == evolve) {
+      status = st;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double cpu = cpu_seconds(view) - cpu0;
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(dir / "evolve.txt");
+  ASSERT_FALSE(latency.empty());
+  std::vector<double> l;
+  for (const auto& [id, ms] : latency) l.push_back(ms);
+  std::sort(l.begin(), l.end());
+  std::cout << "server CPU: " << cpu << " s over " << wall << " s of evolution (" << 100 * cpu / wall
+            << " % of a core); pose publication -> drawn: median " << l[l.size() / 2] << " ms, max " << l.back()
+            << " ms over " << l.size() << " champions\n";
+  EXPECT_LT(cpu / wall, 0.5);
+  EXPECT_LT(l[l.size() / 2], 1000.0);
+  kill_process(view, SIGTERM);
+  EXPECT_EQ(wait_status(view), 0);
 }
 
 }  // namespace

@@ -168,5 +168,18 @@ TEST(ViewState, ANewRunStartsThePagesOver) {
   EXPECT_EQ(s.counters().generations, 0);
 }
 
+TEST(ViewState, QuietIntakeEndsWithOneSnapshotPerPage) {
+  ViewState s("log", "test.lcmlog");
+  auto c = s.join(nullptr);
+  drain(*c);
+  s.set_quiet(true);
+  for (int g = 0; g < 3; ++g) generation(s, g, true);
+  EXPECT_FALSE(c->queue.pop().has_value());  // nothing while quiet
+  s.set_quiet(false);
+  const auto frames = drain(*c);
+  EXPECT_EQ(kinds(frames), (std::vector<std::string>{"hello", "run", "history", "champions", "robot", "poses"}));
+  EXPECT_EQ(frames[2]["gens"].size(), 3u);
+}
+
 }  // namespace
 }  // namespace robozoo::view

@@ -10,12 +10,13 @@ const LEAF = 0xd62c24, INNER = 0x2858cc, TARGET = 0xf0b020;
 export class Scene {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true });
+    // No multisampling: with software WebGL (SwiftShader) it costs several times the frame.
+    this.renderer = new THREE.WebGLRenderer({ antialias: false });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     container.appendChild(this.renderer.domElement);
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xe8ecf0);
-    this.scene.fog = new THREE.Fog(0xe8ecf0, 30, 90);
+    this.scene.fog = new THREE.Fog(0xe8ecf0, 15, 60);
     this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 300);
     this.camera.up.set(0, 0, 1);
     this.camera.position.set(-1.0, -4.5, 2.0);
@@ -34,14 +35,16 @@ export class Scene {
 
     // The ground is pushed back in depth so that the grid lines on it always win.
     const ground = new THREE.Mesh(new THREE.PlaneBufferGeometry(400, 400),
-                                  new THREE.MeshLambertMaterial({ color: 0xb8b5ae, polygonOffset: true,
+                                  new THREE.MeshBasicMaterial({ color: 0xc9c6bf, polygonOffset: true,
                                                                   polygonOffsetFactor: 2, polygonOffsetUnits: 2 }));
+    ground.renderOrder = -1;            // drawn first; lines on it do not depend on depth precision
+    ground.material.depthWrite = false;
     this.scene.add(ground);
-    const grid = new THREE.GridHelper(200, 400, 0x9a978f, 0xb4b1aa);
+    const grid = new THREE.GridHelper(200, 400, 0x8f8c85, 0x8f8c85);
     grid.rotation.x = Math.PI / 2;   // GridHelper lies in x-z; the ground is x-y
     grid.position.z = 0.002;
     this.scene.add(grid);
-    const coarse = new THREE.GridHelper(200, 200, 0x8a877f, 0x8a877f);
+    const coarse = new THREE.GridHelper(200, 200, 0x5f5d58, 0x5f5d58);
     coarse.rotation.x = Math.PI / 2;
     coarse.position.z = 0.003;
     this.scene.add(coarse);
@@ -83,14 +86,16 @@ export class Scene {
   /// centres (x,y,z per sphere). Two instanced meshes, one per colour. The
   /// camera backs off to frame the robot (keeping the direction it looks in).
   setRobot(radius, leaf, start) {
-    for (const m of this.meshes) this.scene.remove(m);
+    for (const m of this.meshes) { this.scene.remove(m); m.geometry.dispose(); }
     this.meshes = [];
     this.radius = radius;
     this.slots = [];
     const counts = [0, 0];
     for (let i = 0; i < radius.length; i++) this.slots.push([leaf[i] ? 0 : 1, counts[leaf[i] ? 0 : 1]++]);
     [this.leafMaterial, this.innerMaterial].forEach((mat, k) => {
-      const mesh = new THREE.InstancedMesh(this.sphere, mat, Math.max(1, counts[k]));
+      // A geometry of its own per mesh: three.js r111 re-binds the instance
+      // matrices only when the geometry changes between draws.
+      const mesh = new THREE.InstancedMesh(this.sphere.clone(), mat, Math.max(1, counts[k]));
       mesh.visible = counts[k] > 0;
       mesh.frustumCulled = false;
       this.scene.add(mesh);

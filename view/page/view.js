@@ -17,7 +17,7 @@ const state = {
   following: true,      // show the newest champion as it arrives (false while a replay plays)
   liveRobot: null,      // the newest live robot and its samples, kept while a replay plays
   liveSamples: [], liveDone: false,
-  frames: 0, fps: 0, fpsFrames: 0, fpsSince: performance.now(), framesReceived: 0,
+  frames: 0, stripDrawn: 0, fps: 0, fpsFrames: 0, fpsSince: performance.now(), framesReceived: 0,
 };
 
 const num = (v, d = 2) => (typeof v === "number" && isFinite(v) ? v.toFixed(d) : "–");
@@ -163,8 +163,11 @@ function frame(now) {
   const d = playback.advance(dt, now);
   if (d) scene.place(d.a.c, d.b.c, d.f);
   scene.render();
-  strip.draw(playback.samples, playback.index,
-             state.run ? Math.max(state.run.steps * state.run.dt, playback.samples.length ? playback.samples[playback.samples.length - 1].time : 0) : null);
+  if (now - state.stripDrawn >= 200) {  // five times a second is enough for the strip
+    state.stripDrawn = now;
+    strip.draw(playback.samples, playback.index,
+               state.run ? Math.max(state.run.steps * state.run.dt, playback.samples.length ? playback.samples[playback.samples.length - 1].time : 0) : null);
+  }
   state.frames++; state.fpsFrames++;
   if (now - state.fpsSince >= 1000) {
     state.fps = state.fpsFrames * 1000 / (now - state.fpsSince);
@@ -190,4 +193,11 @@ window.robozooView = {
     dropped: state.stats ? state.stats.dropped : null, run: state.run ? state.run.id : null,
   }),
   replay,
+  /// Milliseconds per draw of the 3D view, the strip and the chart (n draws each).
+  timeDraw: (n) => {
+    const time = (f) => { const t0 = performance.now(); for (let i = 0; i < n; i++) f(); return (performance.now() - t0) / n; };
+    const gl = scene.renderer.getContext();
+    return { scene: time(() => { scene.render(); gl.finish(); }),
+             strip: time(() => strip.draw(playback.samples, playback.index, null)), chart: time(() => chart.draw()) };
+  },
 };
