@@ -429,21 +429,27 @@ TEST(MutateAddNodeHyperNeat, SplitsForwardLinksOnly) {
   validate_genome(g, layout);
 }
 
-TEST(HyperNeatRules, ControlRegimeHoldsForwardLinksOnlyAfterManyMutations) {
+// Rounds of add-node and add-link, each with probability 1/2, and weight mutations.
+Genome mutated_start(Regime regime, const NeatParams& p, int64_t id, int rounds, Rng& rng) {
   const GenomeLayout layout = robot_layout();
+  Genome g = initial_genome(layout, id, p, regime, rng);
+  InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+  for (int r = 0; r < rounds; ++r) {
+    t.new_generation();
+    if (rng.bernoulli(0.5)) mutate_add_node(g, p, t, r, rng);
+    if (rng.bernoulli(0.5)) mutate_add_link(g, regime, layout, p, t, r, rng);
+    mutate_weights(g, p, r, rng);
+  }
+  validate_genome(g, layout);
+  return g;
+}
+
+TEST(HyperNeatRules, ControlRegimeHoldsForwardLinksOnlyAfterManyMutations) {
   const NeatParams p;
   Rng rng(26);
   int hidden = 0, links = 0;
   for (int trial = 0; trial < 20; ++trial) {
-    Genome g = initial_genome(layout, trial, p, Regime::FeedForward, rng);
-    InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
-    for (int r = 0; r < 60; ++r) {
-      t.new_generation();
-      if (rng.bernoulli(0.5)) mutate_add_node(g, p, t, r, rng);
-      if (rng.bernoulli(0.5)) mutate_add_link(g, Regime::FeedForward, layout, p, t, r, rng);
-      mutate_weights(g, p, r, rng);
-    }
-    validate_genome(g, layout);
+    const Genome g = mutated_start(Regime::FeedForward, p, trial, 60, rng);
     for (const auto& l : g.links) {
       ASSERT_TRUE(is_forward_link(g, l)) << l.from << " -> " << l.to;
       ASSERT_NE(l.from, l.to);
@@ -457,18 +463,10 @@ TEST(HyperNeatRules, ControlRegimeHoldsForwardLinksOnlyAfterManyMutations) {
 }
 
 TEST(HyperNeatRules, RecurrentRegimeNeverMakesSelfLoopsAndKeepsItsCycles) {
-  const GenomeLayout layout = robot_layout();
   const NeatParams p;
   Rng rng(27);
   for (int trial = 0; trial < 10; ++trial) {
-    Genome g = initial_genome(layout, trial, p, Regime::Recurrent, rng);
-    InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
-    for (int r = 0; r < 60; ++r) {
-      t.new_generation();
-      if (rng.bernoulli(0.5)) mutate_add_node(g, p, t, r, rng);
-      if (rng.bernoulli(0.5)) mutate_add_link(g, Regime::Recurrent, layout, p, t, r, rng);
-    }
-    validate_genome(g, layout);
+    const Genome g = mutated_start(Regime::Recurrent, p, trial, 60, rng);
     EXPECT_FALSE(has_self_loop(g));
     EXPECT_TRUE(has_cycle(g));
     EXPECT_GE(count_recurrent_links(g), 110);
