@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "evolve/messages/safe_decode.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"

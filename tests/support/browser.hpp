@@ -122,7 +122,9 @@ class HeadlessBrowser {
       if (n <= 0) throw std::runtime_error("the browser is gone (writing " + method + ")");
       done += static_cast<size_t>(n);
     }
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(timeout));
     for (;;) {
       const nlohmann::json reply = next_message(deadline, method);
       if (reply.contains("id") && reply["id"] == id) {

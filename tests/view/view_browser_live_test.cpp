@@ -23,6 +23,7 @@
 #include "evolve/io/event_log.hpp"
 #include "render/png_io.hpp"
 #include "tests/render/fixtures.hpp"
+#include "tests/render/messages.hpp"
 #include "tests/support/browser.hpp"
 #include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
@@ -43,7 +44,7 @@ bool inside_namespace() { return std::getenv("ROBOZOO_VIEW_NETNS") != nullptr; }
 void run_inside(const std::string& test) {
   char self[4096] = {0};
   ASSERT_GT(::readlink("/proc/self/exe", self, sizeof self - 1), 0);
-  const Outcome o = run_shell("timeout 240 unshare -n sh -c 'ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
+  const robozoo::testing::Outcome o = run_shell("timeout 240 unshare -n sh -c 'ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
                               "ROBOZOO_VIEW_NETNS=1 exec " + std::string(self) + " --gtest_filter=" + test + "'");
   EXPECT_EQ(o.status, 0) << o.output;
   EXPECT_NE(o.output.find("[  PASSED  ] 1 test"), std::string::npos) << o.output;
@@ -245,7 +246,7 @@ TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
 /// whose spheres sway, `steps` steps of 0.01 s with a pose every 4: what the
 /// page draws costs the same for it as for an evolved robot of n spheres.
 void write_swaying_robot(const std::string& path, int n, int steps) {
-  using namespace render::testing;
+  using namespace robozoo::render::testing;
   EventLogWriter w = EventLogWriter::create(path);
   run_t run = run_message("sway", steps);
   append(w, kChannelRun, run);
