@@ -251,7 +251,7 @@ RunConfig config_from_text(const std::string& text, ConfigFormat format, const s
   } else {
     try {
       j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers beyond a double (out_of_range)
       throw ConfigError(name + ": not valid JSON (" + e.what() + ")");
     }
   }
