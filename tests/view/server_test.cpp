@@ -1,0 +1,194 @@
+// robozoo-view's web server in this process, on a free loopback port: the
+// fixed set of files, and what closes a page's connection.
+#include "view/server.hpp"
+
+#include <gtest/gtest.h>
+
+#include <boost/asio.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <nlohmann/json.hpp>
+
+#include "tests/render/messages.hpp"
+
+namespace robozoo::view {
+namespace {
+
+namespace net = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+using tcp = net::ip::tcp;
+using namespace robozoo::render::testing;
+
+AssetDirs test_dirs() { return {std::string(ROBOZOO_SOURCE_DIR) + "/view/page", ROBOZOO_THREE_DIR}; }
+
+struct Fixture {
+  AssetTable assets = AssetTable::load(test_dirs());
+  ViewState state{"log", "test"};
+  Server server;
+  Fixture() : server(options(), assets, state) { server.start(); }
+  static ServerOptions options() {
+    ServerOptions o;
+    o.port = 0;
+    o.stats_interval = 0.2;
+    return o;
+  }
+};
+
+http::response<http::string_body> get(unsigned short port, const std::string& target,
+                                      http::verb verb = http::verb::get) {
+  net::io_context ioc;
+  tcp::socket s(ioc);
+  s.connect({net::ip::make_address("127.0.0.1"), port});
+  http::request<http::string_body> req{verb, target, 11};
+  req.set(http::field::host, "127.0.0.1");
+  http::write(s, req);
+  beast::flat_buffer b;
+  http::response<http::string_body> res;
+  http::read(s, b, res);
+  return res;
+}
+
+struct Page {
+  net::io_context ioc;
+  websocket::stream<tcp::socket> ws{ioc};
+  explicit Page(unsigned short port, const std::string& origin = "") {
+    ws.next_layer().connect({net::ip::make_address("127.0.0.1"), port});
+    ws.set_option(websocket::stream_base::decorator([origin](websocket::request_type& r) {
+      if (!origin.empty()) r.set(http::field::origin, origin);
+    }));
+    ws.handshake("127.0.0.1:" + std::to_string(port), "/ws");
+  }
+  nlohmann::json read() {
+    beast::flat_buffer b;
+    ws.read(b);
+    return nlohmann::json::parse(beast::buffers_to_string(b.data()));
+  }
+  /// Reads until a frame of kind `t`; throws when the connection closes first.
+  nlohmann::json read_until(const std::string& t) {
+    for (;;) {
+      nlohmann::json j = read();
+      if (j["t"] == t) return j;
+    }
+  }
+  /// True when the server closes the connection (reads fail) within a few frames.
+  bool closed_by_server() {
+    try {
+      for (int i = 0; i < 100; ++i) read();
+    } catch (const beast::system_error&) {
+      return true;
+    }
+    return false;
+  }
+};
+
+TEST(ViewServer, ServesTheFixedFilesOnly) {
+  Fixture f;
+  const unsigned short port = f.server.port();
+  auto index = get(port, "/");
+  EXPECT_EQ(index.result(), http::status::ok);
+  EXPECT_NE(index.body().find("robozoo-view"), std::string::npos);
+  EXPECT_EQ(index[http::field::content_type], "text/html; charset=utf-8");
+  EXPECT_EQ(get(port, "/view.js?v=1").result(), http::status::ok);
+  auto three = get(port, "/three/build/three.module.js");
+  EXPECT_EQ(three.result(), http::status::ok);
+  EXPECT_NE(three.body().find("REVISION"), std::string::npos);
+  EXPECT_EQ(get(port, "/three/examples/jsm/controls/OrbitControls.js").result(), http::status::ok);
+  for (const std::string bad : {"/../../etc/passwd", "/%2e%2e/etc/passwd", "/three/build/three.js", "/page/view.js",
+                                "//etc/passwd", "/view.js/", "/CMakeLists.txt"})
+    EXPECT_EQ(get(port, bad).result(), http::status::not_found) << bad;
+  EXPECT_EQ(get(port, "/", http::verb::post).result(), http::status::method_not_allowed);
+  auto head = get(port, "/view.js", http::verb::head);
+  EXPECT_EQ(head.result(), http::status::ok);
+}
+
+TEST(ViewServer, AnswersReplayRequestsAndSendsStats) {
+  Fixture f;
+  // A run whose champion 11 has logged poses.
+  auto send = [&](const char* ch, const auto& m) {
+    const std::vector<uint8_t> b = encode_message(m);
+    f.state.ingest(ch, b.data(), b.size());
+  };
+  send(kChannelRun, run_message("r", 100));
+  send(kChannelGeneration, generation_message("r", 0, 11));
+  send(kChannelGenome, genome_message("r", 0, 11, 15.0));
+  send(kChannelMorphology, morphology_message("r", 0, 11));
+  for (int s = 0; s <= 100; s += 20) send(kChannelPose, pose_message("r", 0, 11, s, 0.01 * s));
+  Page p(f.server.port());
+  EXPECT_EQ(p.read()["t"], "hello");
+  EXPECT_EQ(p.read_until("history")["gens"].size(), 1u);
+  p.ws.write(net::buffer(std::string(R"({"t":"replay","id":11})")));
+  const nlohmann::json robot = p.read_until("robot");
+  EXPECT_EQ(robot["replay"], true);
+  const nlohmann::json poses = p.read_until("poses");
+  EXPECT_EQ(poses["list"].size(), 6u);
+  p.ws.write(net::buffer(std::string(R"({"t":"replay","id":999})")));
+  EXPECT_NE(p.read_until("error")["what"].get<std::string>().find("999"), std::string::npos);
+  const nlohmann::json stats = p.read_until("stats");
+  EXPECT_EQ(stats["dropped"], 0);
+  EXPECT_EQ(stats["pages"], 1);
+}
+
+TEST(ViewServer, UnexpectedMessagesCloseTheConnection) {
+  Fixture f;
+  const unsigned short port = f.server.port();
+  {
+    Page p(port);
+    p.ws.write(net::buffer(std::string(R"({"t":"shutdown"})")));
+    EXPECT_TRUE(p.closed_by_server());
+  }
+  {
+    Page p(port);
+    p.ws.write(net::buffer(std::string("not json")));
+    EXPECT_TRUE(p.closed_by_server());
+  }
+  {
+    Page p(port);
+    p.ws.binary(true);
+    p.ws.write(net::buffer(std::string(R"({"t":"replay","id":1})")));
+    EXPECT_TRUE(p.closed_by_server());
+  }
+  {
+    Page p(port);
+    p.ws.write(net::buffer(std::string(5000, 'x')));  // over the 4096-byte limit
+    EXPECT_TRUE(p.closed_by_server());
+  }
+  EXPECT_EQ(f.server.refused(), 4);
+  // A page still works after all that.
+  Page ok(port);
+  EXPECT_EQ(ok.read()["t"], "hello");
+}
+
+TEST(ViewServer, RefusesASocketForAPageOfAnotherSite) {
+  Fixture f;
+  const unsigned short port = f.server.port();
+  EXPECT_THROW(Page(port, "http://evil.example"), beast::system_error);
+  Page same(port, "http://127.0.0.1:" + std::to_string(port));
+  EXPECT_EQ(same.read()["t"], "hello");
+}
+
+TEST(ViewServer, RefusesABusyPortAndABadAddress) {
+  Fixture f;
+  ServerOptions o;
+  o.port = f.server.port();
+  EXPECT_THROW(Server(o, f.assets, f.state), std::runtime_error);
+  o.port = 0;
+  o.bind = "localhost:80";
+  EXPECT_THROW(Server(o, f.assets, f.state), std::runtime_error);
+}
+
+TEST(ViewAssets, MissingFilesAreNamed) {
+  AssetDirs d = test_dirs();
+  d.three = "/nonexistent";
+  try {
+    AssetTable::load(d);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("libjs-three"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace robozoo::view
