@@ -15,6 +15,7 @@ PACKAGES=(
   libgtest-dev gnuplot-nox
   openmpi-bin libopenmpi-dev
   iproute2 util-linux
+  clang libclang-rt-14-dev   # libFuzzer and clang's sanitizer runtimes (tools/fuzz.sh)
 )
 
 missing=()
