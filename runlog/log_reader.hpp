@@ -3,10 +3,11 @@
 // and saying exactly where it is damaged: the reader behind every program that
 // reads robozoo logs (render, replay, view, log).
 //
-// LCM's own reader (lcm_eventlog_read_next_event, used by evolve's
-// read_event_log) says nothing about what it skipped: LCM 1.3.1 stops at the
-// first garbage that follows an event ("Invalid header after log data"), and
-// trusts the length fields of a header it finds. This reader gives the same
+// LCM's own reader (lcm_eventlog_read_next_event) says nothing about what it
+// skipped: LCM 1.3.1 stops at the first garbage that follows an event ("Invalid
+// header after log data"), and trusts the length fields of a header it finds
+// (evolve's read_event_log keeps LCM's stopping rule but checks every length).
+// This reader gives the same
 // events for an intact log, resynchronises on the sync word after garbage,
 // checks every header (channel length 1-999, data length >= 0 and inside the
 // file) before it allocates, and reports each skipped byte range, a cut last
