@@ -24,9 +24,9 @@ TEST(RobozooTrials, ArrayTasksMapToRegimeAndSeed) {
   TempDir dir;
   const std::string env = "ROBOZOO_DRY_RUN=1 ROBOZOO_RUNS=" + dir.path;
   const std::vector<std::pair<int, std::string>> cases = {{0, "feedforward-s1"},
-                                                          {29, "feedforward-s30"},
-                                                          {30, "recurrent-s1"},
-                                                          {59, "recurrent-s30"}};
+                                                          {29, "feedforward-s88"},
+                                                          {30, "recurrent-s2"},
+                                                          {59, "recurrent-s89"}};
   for (const auto& [task, run] : cases) {
     const Outcome o = trial(env + " SLURM_ARRAY_TASK_ID=" + std::to_string(task), "--preset short");
     EXPECT_EQ(o.status, 0) << o.output;
@@ -38,7 +38,7 @@ TEST(RobozooTrials, ArrayTasksMapToRegimeAndSeed) {
     EXPECT_EQ(o.output.find("--resume"), std::string::npos) << o.output;
   }
   const Outcome few = trial(env + " ROBOZOO_SEEDS=2 SLURM_ARRAY_TASK_ID=3");
-  EXPECT_NE(few.output.find("recurrent-s2.lcmlog"), std::string::npos) << few.output;
+  EXPECT_NE(few.output.find("recurrent-s5.lcmlog"), std::string::npos) << few.output;  // trial 2: 3 + 1 + 1
   const Outcome outside = trial(env + " SLURM_ARRAY_TASK_ID=60");
   EXPECT_EQ(outside.status, 2);
   EXPECT_NE(outside.output.find("outside 0-59"), std::string::npos) << outside.output;
@@ -54,9 +54,9 @@ TEST(RobozooTrials, ATrialRunsUnderMpirunEqualsALocalRunAndResumes) {
   const std::string size = "--population 24 --generations 3 --steps 300 --quiet";
   const Outcome o = trial(env, size);
   ASSERT_EQ(o.status, 0) << o.output;
-  const std::string log = dir / "recurrent-s1.lcmlog";
+  const std::string log = dir / "recurrent-s2.lcmlog";
   ASSERT_TRUE(file_exists(log)) << o.output;
-  const Outcome local = run_shell(bin("robozoo-evolve") + " --workers 2 --regime recurrent --seed 1 --log '" +
+  const Outcome local = run_shell(bin("robozoo-evolve") + " --workers 2 --regime recurrent --seed 2 --log '" +
                                   (dir / "local.lcmlog") + "' " + size);
   ASSERT_EQ(local.status, 0) << local.output;
   EXPECT_EQ(first_log_difference(read_event_log(log), read_event_log(dir / "local.lcmlog")), "");
