@@ -1,6 +1,6 @@
 #pragma once
 // Cameras: where the eye is, what it looks at, and how a robot is framed.
-// z is up (DESIGN.md section 2). Every camera of robozoo-render looks from the
+// z is up (docs/method.md section 2). Every camera of robozoo-render looks from the
 // same direction (azimuth and elevation), so robots are seen alike.
 #include <vector>
 

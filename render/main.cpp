@@ -25,6 +25,7 @@ extern "C" {
 #include "render/selection.hpp"
 #include "render/video_subject.hpp"
 #include "render/zoo_sheet.hpp"
+#include "evolve/core/version.hpp"
 
 using namespace robozoo::render;
 
@@ -326,6 +327,7 @@ int main(int argc, char** argv) {
   // libx264 and the MP4 muxer report every file on stderr; keep errors only.
   av_log_set_level(AV_LOG_ERROR);
   try {
+    app.set_version_flag("--version", robozoo::version_line());
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);

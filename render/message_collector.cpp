@@ -157,7 +157,7 @@ void MessageCollector::handle_generation(const void* data, size_t size) {
 }
 
 void MessageCollector::handle_genome(const void* data, size_t size) {
-  genome_t m;
+  cppn_genome_t m;
   std::string why;
   if (!decode(data, size, m, &why)) return problem(stats_.undecodable, std::string(kChannelGenome) + ": " + why);
   RunRecord* run = find_run(m.run_id);

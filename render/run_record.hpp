@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "robozoo/generation_t.hpp"
-#include "robozoo/genome_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
 #include "robozoo/run_t.hpp"
@@ -17,7 +17,7 @@ namespace robozoo::render {
 
 /// A published genome and what arrived with it.
 struct GenomeRecord {
-  genome_t genome;
+  cppn_genome_t genome;
   bool has_morphology = false;
   morphology_t morphology;
   /// Its generation's champion (generation_t.champion_id), or published

@@ -44,7 +44,7 @@ struct SceneView {
   bool shadows = true;
   bool outlines = true;             ///< smooth silhouettes (cheap anti-aliasing without multisampling)
   bool show_target = false;
-  Eigen::Vector3d target{10, 0, 0}; ///< target position (m)
+  Eigen::Vector3d target{50, 0, 0}; ///< target position (m)
 };
 
 class SceneRenderer {

@@ -16,7 +16,7 @@ void mix(uint64_t& h, uint64_t v) {
 }
 }  // namespace
 
-uint64_t gene_hash(const genome_t& g) {
+uint64_t gene_hash(const cppn_genome_t& g) {
   uint64_t h = 1469598103934665603ull;
   for (const auto& n : g.nodes) {
     mix(h, static_cast<uint64_t>(n.id));

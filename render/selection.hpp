@@ -28,6 +28,6 @@ std::vector<Pick> genome_by_id(const std::vector<const RunRecord*>& runs, int64_
 
 /// Hash of a genome's genes (nodes and links), ignoring its id and scores:
 /// equal for NEAT's unchanged copies of a champion.
-uint64_t gene_hash(const genome_t& g);
+uint64_t gene_hash(const cppn_genome_t& g);
 
 }  // namespace robozoo::render

@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "robozoo/genome_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
 #include "robozoo/run_t.hpp"
@@ -38,7 +38,7 @@ Trajectory trajectory_from_poses(const std::vector<pose_t>& poses, size_t num_sp
 /// re-grown robot must be the logged `morphology` (same spheres, same centres);
 /// throws std::runtime_error when it is not (another software version or
 /// configuration), std::invalid_argument for a bad configuration or genome.
-Trajectory simulate_trajectory(const run_t& run, const genome_t& genome, const morphology_t& morphology,
+Trajectory simulate_trajectory(const run_t& run, const cppn_genome_t& genome, const morphology_t& morphology,
                                int every = 1);
 
 }  // namespace robozoo::render

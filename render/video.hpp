@@ -41,7 +41,7 @@ void validate(const VideoOptions& o);
 struct VideoSubject {
   RobotCard card;
   Trajectory trajectory;
-  Eigen::Vector3d target{10, 0, 0};  ///< where the robot should go (m)
+  Eigen::Vector3d target{50, 0, 0};  ///< where the robot should go (m)
 };
 
 /// Frames of a video of a trajectory lasting `duration` simulated seconds.

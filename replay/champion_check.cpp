@@ -5,6 +5,7 @@
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
+#include "evolve/neat/population.hpp"
 #include "evolve/sim/simulation.hpp"
 #include "replay/morphology_compare.hpp"
 #include "replay/pose_compare.hpp"
@@ -88,7 +89,7 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
     return out;
   };
 
-  genome_t gm{};
+  cppn_genome_t gm{};
   if (!decode_event(log, index, g.genome_event, gm)) {
     out.problems.push_back("its genome message does not decode");
     return finish();
@@ -100,9 +101,11 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
     out.problems.push_back(std::string("its genome cannot be used: ") + e.what());
     return finish();
   }
-  if (config.regime == Regime::FeedForward && has_cycle(genome)) {
+  try {
+    validate_regime_links(genome, config.regime, config.neat);
+  } catch (const std::invalid_argument& e) {
     cmp.set_context("genome");
-    cmp.note("links", "a cycle", "no cycle (the run is feed-forward)");
+    cmp.note("links", e.what(), "only links the run's regime allows");
   }
   try {
     // Growth and evaluation: pure functions of (genes, configuration).

@@ -43,7 +43,7 @@ LiveSimStats live_simulate(const LogContents& log, const LogIndex& index, const 
   const LogRecord& run_record = log.records[index.events[static_cast<size_t>(g->run_event)].record];
   const LogRecord& genome_record = log.records[index.events[g->genome_event].record];
   run_t run{};
-  genome_t gm{};
+  cppn_genome_t gm{};
   std::string why;
   if (!safe_decode(run_record.data.data(), run_record.data.size(), run, &why))
     throw std::invalid_argument("its ROBOZOO_RUN does not decode: " + why);

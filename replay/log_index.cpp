@@ -35,7 +35,7 @@ bool fill(const LogRecord& r, IndexedEvent& e, std::string& why) {
       return true;
     }
     case EventKind::Genome: {
-      genome_t m{};
+      cppn_genome_t m{};
       if (!safe_decode(r.data.data(), r.data.size(), m, &why)) return false;
       e.run_id = m.run_id;
       e.generation = m.generation;

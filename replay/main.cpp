@@ -12,6 +12,7 @@
 #include "replay/live_sim.hpp"
 #include "replay/player.hpp"
 #include "replay/progress_bar.hpp"
+#include "evolve/core/version.hpp"
 
 namespace {
 
@@ -142,7 +143,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "robozoo-replay: re-grow and re-simulate the genomes of a robozoo log (written by robozoo-evolve or\n"
       "recorded by lcm-logger) with the same code and the configuration of the log's ROBOZOO_RUN."};
-  app.set_version_flag("--version", ROBOZOO_VERSION);
+  app.set_version_flag("--version", robozoo::version_line());
   app.require_subcommand(1);
 
   CheckArgs c;

@@ -1,6 +1,6 @@
 #pragma once
 // Growth and evaluation of the genomes a check has already recomputed. Both
-// are pure functions of (genes, configuration) (DESIGN.md section 4), and NEAT
+// are pure functions of (genes, configuration) (docs/method.md section 4), and NEAT
 // copies an unchanged champion under a fresh id every generation it stays
 // best, so a long run logs the same genes many times: they are grown and
 // evaluated once. Genes are matched exactly (weights bit for bit), not by hash.

@@ -26,6 +26,7 @@
 #include "evolve/neat/random_genome.hpp"
 #include "evolve/run/checkpoint.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "evolve/core/version.hpp"
 
 using namespace robozoo;
 using Clock = std::chrono::steady_clock;
@@ -162,21 +163,19 @@ int main(int argc, char** argv) {
                "evaluation to a bare ODE loop over the same bodies and joints (the engine's limit)."};
   int genomes = 200, rounds = 30, max_draws = 200000;
   uint64_t seed = 1;
-  bool json = false, fully_recurrent = false, log_only = false;
+  bool json = false, log_only = false;
   std::string config_file, log_path;
   app.add_option("--genomes", genomes, "simulated random genomes per regime (default 200)")->check(CLI::Range(1, 100000));
   app.add_option("--mutations", rounds, "mutation rounds of each random genome (default 30)")->check(CLI::Range(0, 10000));
   app.add_option("--seed", seed, "seed of the genome set (default 1)");
   app.add_option("--max-draws", max_draws, "give up after drawing this many genomes per regime");
-  app.add_flag("--fully-recurrent", fully_recurrent,
-               "recurrent genomes start fully recurrent (every input to every output, every output to every other\n"
-               "output: 209 links, cycles from the start) before their mutations");
   app.add_option("--log", log_path,
                  "also measure the population of this logged run's last generation (read from LOG.checkpoint:\n"
                  "the last generation of a finished run, the next one bred of an unfinished run)");
   app.add_flag("--log-only", log_only, "with --log: measure the logged population only, no random genomes");
   app.add_option("--config", config_file, "configuration file (.json or .toml) for the random genomes");
   app.add_flag("--json", json, "print the figures as JSON");
+  app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
   if (log_only && log_path.empty()) {
     std::cerr << "robozoo-bench: --log-only needs --log LOG\n";
@@ -204,11 +203,10 @@ int main(int argc, char** argv) {
     for (Regime r : {Regime::FeedForward, Regime::Recurrent}) {
       RandomGenomeParams rp;
       rp.rounds = rounds;
-      rp.fully_recurrent_start = fully_recurrent && r == Regime::Recurrent;
       const Totals t = bench_random(r, config, genomes, rp, seed, max_draws);
       std::string name = regime_name(r);
       nlohmann::json j = report(t);
-      j["fully_recurrent_start"] = rp.fully_recurrent_start;
+      j["initial_links"] = initial_links_name(config.neat.initial_links);
       out[name] = j;
       names.push_back(name);
     }

@@ -23,6 +23,7 @@
 #include "evolve/experiment/progress_estimate.hpp"
 #include "evolve/experiment/trial_plan.hpp"
 #include "evolve/experiment/trial_status.hpp"
+#include "evolve/core/version.hpp"
 
 using namespace robozoo;
 
@@ -97,17 +98,26 @@ void print_status(const Experiment& e) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "robozoo-experiment: run the paper's experiment, --trials seeds (1..N) of each regime (feed-forward and\n"
-      "recurrent CPPNs) with robozoo-evolve, one log per trial in --out (<regime>-s<seed>.lcmlog). Stop it\n"
-      "at any time (Ctrl-C) and run the same command again: finished trials are skipped, a stopped one is\n"
-      "resumed, the others are started. The paper's sizes are the defaults (30 trials, population 150,\n"
-      "500 generations). Afterwards: robozoo-stats DIR."};
+      "robozoo-experiment: run the paper's experiment, --trials trials of each arm (feed-forward and\n"
+      "recurrent CPPNs; optionally recurrent CPPNs from the control's sparse start) with robozoo-evolve,\n"
+      "one log per trial in --out (<arm>-s<seed>.lcmlog). No two trials share a seed: trial k of arm a\n"
+      "(0 feedforward, 1 recurrent, 2 recurrent-sparse) uses seed 3(k-1)+a+1. Stop it at any time (Ctrl-C)\n"
+      "and run the same command again: finished trials are skipped, a stopped one is resumed, the others\n"
+      "are started. The paper's sizes are the defaults (30 trials, population 150, 500 generations).\n"
+      "Afterwards: robozoo-stats DIR."};
   ExperimentParams p;
   std::string evolve;
   bool status_only = false;
   double progress_interval = 5.0;
   app.add_option("--out", p.out_dir, "folder of the experiment's logs (created if missing)")->required();
-  app.add_option("--trials", p.trials, "seeds per regime (paper: 30)")->check(CLI::Range(1, 100000));
+  app.add_option("--trials", p.trials, "trials per arm (paper: 30)")->check(CLI::Range(1, 100000));
+  std::vector<std::string> arm_names = {"feedforward", "recurrent"};
+  app.add_option("--arms", arm_names,
+                 "the arms, comma-separated: feedforward (control), recurrent (experimental, HyperNEAT's fully "
+                 "recurrent start), recurrent-sparse (recurrence allowed, the control's 99-link start)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"feedforward", "recurrent", "recurrent-sparse"}))
+      ->capture_default_str();
   app.add_option("--generations", p.generations, "generations per trial (paper: 500)")->check(CLI::Range(1, 1000000000));
   app.add_option("--population", p.population, "genomes per generation (paper: 150)")->check(CLI::Range(2, 1000000));
   app.add_option("--workers", p.workers, "robozoo-evolve worker processes per trial (default: one per core)")
@@ -127,12 +137,15 @@ int main(int argc, char** argv) {
   app.add_option("--progress-interval", progress_interval, "seconds between progress lines (at most one per generation)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--status", status_only, "print where each trial stands and exit");
+  app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
   {
     std::istringstream words(mpirun);
     p.mpirun.clear();
     for (std::string w; words >> w;) p.mpirun.push_back(w);
   }
+  p.arms.clear();
+  for (const auto& a : arm_names) p.arms.push_back(robozoo::arm_from_name(a));
   if (p.mpi_ranks == 0 && app.count("--mpirun") > 0) {
     std::cerr << "robozoo-experiment: --mpirun only applies with --mpi RANKS\n";
     return 2;

@@ -37,6 +37,7 @@
 #include "evolve/parallel/scaling_model.hpp"
 #include "evolve/run/evolution.hpp"
 #include "evolve/run/pool_evaluator.hpp"
+#include "evolve/core/version.hpp"
 
 using namespace robozoo;
 using Clock = std::chrono::steady_clock;
@@ -468,6 +469,7 @@ int main(int argc, char** argv) {
                "write checkpoints within the generation, as a local run does (to compare)");
   app.add_option("--json", o.json_path, "also write every figure to this JSON file");
   try {
+    app.set_version_flag("--version", robozoo::version_line());
     app.parse(argc, argv);
     o.ranks.clear();
     std::stringstream ss(ranks_text);

@@ -16,6 +16,7 @@
 #include "evolve/core/rng.hpp"
 #include "evolve/sim/random_robot.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "evolve/core/version.hpp"
 
 using namespace robozoo;
 
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
   app.add_flag("--bench", bench, "time whole episodes of random robots with exactly N spheres instead");
   app.add_option("--bench-sizes", bench_sizes, "sphere counts for --bench");
   app.add_option("--bench-robots", bench_robots, "robots per size for --bench");
+  app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
 
   Rng rng(seed);

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "evolve/analysis/stats_job.hpp"
+#include "evolve/core/version.hpp"
 
 using namespace robozoo;
 
@@ -36,8 +37,23 @@ int main(int argc, char** argv) {
   app.add_option("--render", o.render, "the robozoo-render program (default: the one next to this program)");
   app.add_flag("--no-zoo", no_zoo, "do not make zoo sheets");
   app.add_option("--title", o.title, "title of the report");
+  std::vector<std::string> compare = {"feedforward", "recurrent"};
+  app.add_option("--compare", compare,
+                 "the two arms to compare, control first: feedforward, recurrent or recurrent-sparse "
+                 "(robozoo-experiment --arms); runs of other arms are listed and left out")
+      ->delimiter(',')
+      ->expected(2)
+      ->check(CLI::IsMember({"feedforward", "recurrent", "recurrent-sparse"}))
+      ->capture_default_str();
   app.add_option("--note", o.notes, "a paragraph for the top of the report (repeatable)");
+  app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
+  if (compare.size() != 2 || compare[0] == compare[1]) {
+    std::cerr << "robozoo-stats: --compare needs two different arms, e.g. feedforward,recurrent-sparse\n";
+    return 2;
+  }
+  o.control_arm = compare[0];
+  o.experimental_arm = compare[1];
   o.plots = !no_plots;
   o.zoo = !no_zoo;
   o.analysis.changes.simulated_only = !all_changes;

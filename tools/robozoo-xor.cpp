@@ -1,7 +1,8 @@
 // robozoo-xor: the NEAT core's proof on XOR (the NEAT paper's benchmark).
 //
 // For each run r (seed S + r) and each regime (feed-forward first, then
-// recurrent), CPPN-NEAT with the project's defaults evolves XOR networks
+// recurrent), CPPN-NEAT with a preset's parameters (the project's defaults, or
+// the NEAT paper's own: evolve/neat/xor_presets.hpp) evolves XOR networks
 // (evolve/neat/xor_task.hpp) until some genome solves it or the generation
 // cap is reached (a failure).
 //
@@ -22,9 +23,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "evolve/config/run_config.hpp"
 #include "evolve/core/rng.hpp"
 #include "evolve/neat/population.hpp"
+#include "evolve/neat/xor_presets.hpp"
 #include "evolve/neat/xor_task.hpp"
+#include "evolve/core/version.hpp"
 
 namespace {
 
@@ -40,9 +44,10 @@ struct RunResult {
   int species = 0;           // species in the solving generation
 };
 
-RunResult run_once(const robozoo::NeatParams& params, Regime regime, int64_t seed, int cap) {
+RunResult run_once(const robozoo::NeatParams& params, const robozoo::GenomeLayout& layout, Regime regime,
+                   int64_t seed, int cap) {
   robozoo::Rng rng(static_cast<uint64_t>(seed));
-  robozoo::Population pop(params, regime, robozoo::xor_layout(), rng);
+  robozoo::Population pop(params, regime, layout, rng);
   RunResult r;
   r.seed = seed;
   int64_t evaluations = 0;
@@ -52,7 +57,7 @@ RunResult run_once(const robozoo::NeatParams& params, Regime regime, int64_t see
     fitness.assign(genomes.size(), 0.0);
     int best_solver = -1;
     for (size_t i = 0; i < genomes.size(); ++i) {
-      const robozoo::XorResult x = robozoo::evaluate_xor(genomes[i]);
+      const robozoo::XorResult x = robozoo::evaluate_xor(genomes[i], layout);
       fitness[i] = x.fitness;
       if (x.solved && (best_solver < 0 || x.fitness > fitness[static_cast<size_t>(best_solver)]))
         best_solver = static_cast<int>(i);
@@ -120,17 +125,22 @@ Summary summarise(const std::string& name, const std::vector<RunResult>& rs, dou
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "robozoo-xor: CPPN-NEAT on XOR, feed-forward then recurrent regime, with the project's "
-      "NEAT defaults. Inputs x1, x2 in {0,1} and bias 1.0; output signed sigmoid mapped to "
-      "(out+1)/2; fitness (4 - sum|err|)^2; solved when all four patterns are on the right "
-      "side of 0.5. Evaluations to solve = genomes evaluated up to and including the "
-      "generation where a solution first appears."};
+      "robozoo-xor: CPPN-NEAT on XOR, feed-forward then recurrent regime. Presets: 'default' (the "
+      "project's NEAT: HyperNEAT's defaults and topology rules; output signed sigmoid mapped to "
+      "(out+1)/2) and 'neat-paper' (the NEAT paper's own XOR parameters: steepened sigmoid "
+      "1/(1+e^(-4.9x)), c1 = c2 = 1, c3 = 0.4, fixed threshold 3.0, classic add-node, disabled "
+      "genes inherited disabled with p 0.75, interspecies mating 0.001, classic topology rules). "
+      "Inputs x1, x2 in {0,1} and bias 1.0; fitness (4 - sum|err|)^2; solved when all four patterns "
+      "are on the right side of 0.5. Evaluations to solve = genomes evaluated up to and including "
+      "the generation where a solution first appears."};
   int runs = 100;
   int64_t seed = 1;
   int generations = 1000;
   int population = 150;
   bool as_json = false;
-  unsigned hidden_activations = robozoo::NeatParams{}.hidden_activations;
+  unsigned hidden_activations = 0;
+  std::string preset_name = "default";
+  std::string hidden = "";
   app.add_option("--runs", runs, "independent runs per regime (run r uses seed S + r)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -141,17 +151,47 @@ int main(int argc, char** argv) {
   app.add_option("--population", population, "population size")
       ->check(CLI::Range(2, 1000000))
       ->capture_default_str();
+  app.add_option("--preset", preset_name, "parameter set: default or neat-paper")
+      ->check(CLI::IsMember(robozoo::xor_preset_names()))
+      ->capture_default_str();
+  auto* hidden_opt = app.add_option("--hidden", hidden,
+                                    "activations a new hidden node may get: 'sigmoid' (the preset's sigmoid only) "
+                                    "or 'all' (its sigmoid, signed cosine, Gaussian); default: the preset's own "
+                                    "(default: all, neat-paper: sigmoid)")
+                         ->check(CLI::IsMember({"sigmoid", "all"}));
   app.add_option("--hidden-activations", hidden_activations,
                  "bit mask of the activations a new hidden node may get (bit 0 signed sigmoid, "
-                 "1 signed cosine, 2 Gaussian); 1 = sigmoid only, as in the NEAT paper's XOR")
+                 "1 signed cosine, 2 Gaussian, 3 linear, 4 sine, 5 steepened sigmoid)")
       ->check(CLI::Range(1u, (1u << robozoo::kNumActivations) - 1u))
-      ->capture_default_str();
+      ->excludes(hidden_opt);
+  std::vector<std::string> sets;
+  app.add_option("--set", sets,
+                 "change one NEAT parameter of the preset: neat.KEY=VALUE as robozoo-evolve's --set (e.g. "
+                 "neat.weight_limit=8); repeatable")
+      ->take_all();
   app.add_flag("--json", as_json, "print the results as JSON instead of a table");
+  app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
 
-  robozoo::NeatParams params;
+  const robozoo::XorPreset preset = robozoo::xor_preset(preset_name);
+  robozoo::NeatParams params = preset.params;
   params.population = population;
-  params.hidden_activations = hidden_activations;
+  if (hidden == "sigmoid") params.hidden_activations = preset.sigmoid_only;
+  if (hidden == "all") params.hidden_activations = preset.all_three;
+  if (hidden_activations != 0) params.hidden_activations = hidden_activations;
+  try {
+    robozoo::RunConfig c;
+    c.neat = params;
+    for (const auto& kv : sets) {
+      if (kv.rfind("neat.", 0) != 0) throw robozoo::ConfigError("--set " + kv + ": only neat.* keys apply to XOR");
+      c = robozoo::config_from_json(robozoo::config_assignment(kv), c);
+    }
+    params = c.neat;
+    robozoo::validate_neat_params(params);
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-xor: " << e.what() << "\n";
+    return 2;
+  }
 
   std::vector<Summary> summaries;
   for (Regime regime : {Regime::FeedForward, Regime::Recurrent}) {
@@ -159,7 +199,7 @@ int main(int argc, char** argv) {
     std::vector<RunResult> results;
     const auto t0 = std::chrono::steady_clock::now();
     for (int r = 0; r < runs; ++r) {
-      const RunResult res = run_once(params, regime, seed + r, generations);
+      const RunResult res = run_once(params, preset.layout, regime, seed + r, generations);
       std::cerr << name << " run " << r + 1 << "/" << runs << " seed " << res.seed << ": "
                 << (res.solved ? "solved in generation " + std::to_string(res.generation) + ", " +
                                      std::to_string(res.evaluations) + " evaluations, " +
@@ -180,7 +220,10 @@ int main(int argc, char** argv) {
     j["seed"] = seed;
     j["population"] = population;
     j["generation_cap"] = generations;
-    j["hidden_activations"] = hidden_activations;
+    j["preset"] = preset_name;
+    j["set"] = sets;
+    j["hidden_activations"] = params.hidden_activations;
+    j["neat_paper_evaluations_mean"] = 4755;
     j["evaluations_counted_as"] =
         "genomes evaluated up to and including the generation of the first solution";
     j["regimes"] = nlohmann::json::array();
@@ -200,9 +243,9 @@ int main(int argc, char** argv) {
     std::cout << j.dump(2) << "\n";
     return 0;
   }
-  std::cout << "XOR, population " << population << ", generation cap " << generations
-            << ", seeds " << seed << ".." << seed + runs - 1 << ", hidden activations mask "
-            << hidden_activations << "\n"
+  std::cout << "XOR, preset " << preset_name << ", population " << population << ", generation cap "
+            << generations << ", seeds " << seed << ".." << seed + runs - 1 << ", hidden activations mask "
+            << params.hidden_activations << "\n"
             << "evaluations = genomes evaluated up to and including the solving generation\n\n";
   std::cout << std::left << std::setw(12) << "regime" << std::right << std::setw(9) << "solved"
             << std::setw(11) << "evals" << std::setw(9) << "std" << std::setw(8) << "min"

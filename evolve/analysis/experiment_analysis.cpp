@@ -57,12 +57,16 @@ std::vector<double> pooled(const std::vector<RunAnalysis>& runs,
 
 }  // namespace
 
-ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs) {
+ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::string& control_arm,
+                                      const std::string& experimental_arm) {
   ExperimentAnalysis e;
+  e.control_arm = control_arm;
+  e.experimental_arm = experimental_arm;
   std::sort(runs.begin(), runs.end(), [](const RunAnalysis& a, const RunAnalysis& b) {
-    return a.regime != b.regime ? a.regime < b.regime : a.seed != b.seed ? a.seed < b.seed : a.path < b.path;
+    return a.arm != b.arm ? a.arm < b.arm : a.seed != b.seed ? a.seed < b.seed : a.path < b.path;
   });
-  for (auto& r : runs) (r.regime == 0 ? e.control : e.experimental).push_back(std::move(r));
+  for (auto& r : runs)
+    (r.arm == control_arm ? e.control : r.arm == experimental_arm ? e.experimental : e.other).push_back(std::move(r));
 
   size_t longest = 0;
   for (const auto* side : {&e.control, &e.experimental})
@@ -93,6 +97,12 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs) {
       {"joints", "joints", "count", [](const RunAnalysis& r) { return r.morphology.joints; }},
       {"distance_sensors", "distance sensors", "count", [](const RunAnalysis& r) { return r.morphology.distance_sensors; }},
       {"touch_sensors", "touch sensors", "count", [](const RunAnalysis& r) { return r.morphology.touch_sensors; }},
+      {"distance_per_sphere", "share of a robot's spheres with a distance sensor", "share",
+       [](const RunAnalysis& r) { return r.morphology.spheres > 0 ? r.morphology.distance_sensors / r.morphology.spheres : 0.0; }},
+      {"touch_per_sphere", "share of a robot's spheres with a touch sensor", "share",
+       [](const RunAnalysis& r) { return r.morphology.spheres > 0 ? r.morphology.touch_sensors / r.morphology.spheres : 0.0; }},
+      {"hit_max_spheres", "best-of-run robots that hit max_spheres (share)", "share",
+       [](const RunAnalysis& r) { return r.max_spheres > 0 && r.morphology.spheres >= r.max_spheres ? 1.0 : 0.0; }},
       {"proprio_sensors", "proprioceptive sensors", "count", [](const RunAnalysis& r) { return r.morphology.proprio_sensors; }},
       {"time_sensors", "time sensors", "count", [](const RunAnalysis& r) { return r.morphology.time_sensors; }},
       {"mean_radius", "mean radius", "m", [](const RunAnalysis& r) { return r.morphology.mean_radius; }},
@@ -109,9 +119,10 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs) {
       {"hidden_cosine", "hidden cosine nodes", "count", [](const RunAnalysis& r) { return r.genotype.hidden_cosine; }},
       {"hidden_gaussian", "hidden Gaussian nodes", "count", [](const RunAnalysis& r) { return r.genotype.hidden_gaussian; }},
       {"links", "links (enabled)", "count", [](const RunAnalysis& r) { return r.genotype.links; }},
-      {"forward_links", "forward links (on no cycle)", "count", [](const RunAnalysis& r) { return r.genotype.forward_links; }},
+      {"forward_links", "forward links (position of source < target)", "count", [](const RunAnalysis& r) { return r.genotype.forward_links; }},
       {"hidden", "hidden nodes", "count", [](const RunAnalysis& r) { return r.genotype.hidden; }},
-      {"recurrent_links", "recurrent links (on a cycle)", "count", [](const RunAnalysis& r) { return r.genotype.recurrent_links; }},
+      {"recurrent_links", "recurrent links (not forward)", "count", [](const RunAnalysis& r) { return r.genotype.recurrent_links; }},
+      {"cycle_links", "links on a directed cycle", "count", [](const RunAnalysis& r) { return r.genotype.cycle_links; }},
   };
   e.genotype = compare_all(geno, e, true);
 
@@ -152,6 +163,19 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs) {
   for (const auto& r : e.control) e.control_without_poses += r.has_best && !r.morphology.ground_known;
   for (const auto& r : e.experimental) e.experimental_without_poses += r.has_best && !r.morphology.ground_known;
   return e;
+}
+
+std::string arm_title(const std::string& arm) {
+  if (arm == "feedforward") return "feed-forward";
+  if (arm == "recurrent-sparse") return "recurrent (sparse start)";
+  return arm;
+}
+
+std::string arm_column(const std::string& arm) {
+  std::string c = arm;
+  for (char& ch : c)
+    if (ch == '-') ch = '_';
+  return c;
 }
 
 const Comparison* find_comparison(const std::vector<Comparison>& list, const std::string& key) {

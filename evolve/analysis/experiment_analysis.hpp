@@ -37,8 +37,11 @@ struct CurvePoint {
 };
 
 struct ExperimentAnalysis {
-  std::vector<RunAnalysis> control;       ///< feed-forward runs, by seed
-  std::vector<RunAnalysis> experimental;  ///< recurrent runs, by seed
+  std::string control_arm = "feedforward";   ///< the arm compared as the control
+  std::string experimental_arm = "recurrent";///< the arm compared as the experimental regime
+  std::vector<RunAnalysis> control;       ///< the control arm's runs, by seed
+  std::vector<RunAnalysis> experimental;  ///< the experimental arm's runs, by seed
+  std::vector<RunAnalysis> other;         ///< runs of other arms (not compared), by arm and seed
   std::vector<CurvePoint> fitness_curve;  ///< Figure 1
   std::vector<Comparison> fitness;        ///< best-of-run fitness
   std::vector<Comparison> morphology;     ///< Figure 2
@@ -48,9 +51,16 @@ struct ExperimentAnalysis {
   int32_t control_without_poses = 0, experimental_without_poses = 0;
 };
 
-/// Compares the regimes over `runs` (runs without a best-of-run robot count
-/// in the fitness curve and fitness, not in the robot statistics).
-ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs);
+/// Compares two arms over `runs` (runs without a best-of-run robot count
+/// in the fitness curve and fitness, not in the robot statistics); runs of
+/// other arms are kept in `other`.
+ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::string& control_arm = "feedforward",
+                                      const std::string& experimental_arm = "recurrent");
+
+/// An arm's name for people: "feed-forward", "recurrent", "recurrent (sparse start)".
+std::string arm_title(const std::string& arm);
+/// An arm's name as a CSV column prefix: "feedforward", "recurrent", "recurrent_sparse".
+std::string arm_column(const std::string& arm);
 
 /// The comparison with `key` in `list`, or nullptr.
 const Comparison* find_comparison(const std::vector<Comparison>& list, const std::string& key);

@@ -4,13 +4,13 @@ namespace robozoo {
 
 namespace {
 
-std::string regime_label(int8_t r) { return r == 0 ? "feedforward" : "recurrent"; }
+std::string regime_label(const RunAnalysis& r) { return r.arm; }
 
 }  // namespace
 
 CsvWriter fitness_curve_table(const ExperimentAnalysis& a) {
-  CsvWriter t({"generation", "feedforward_n", "feedforward_mean", "feedforward_se", "recurrent_n", "recurrent_mean",
-               "recurrent_se"});
+  const std::string c = arm_column(a.control_arm), e = arm_column(a.experimental_arm);
+  CsvWriter t({"generation", c + "_n", c + "_mean", c + "_se", e + "_n", e + "_mean", e + "_se"});
   for (const auto& p : a.fitness_curve)
     t.add_row({std::to_string(p.generation), std::to_string(p.control.n), csv_number(p.control.mean),
                csv_number(p.control.se), std::to_string(p.experimental.n), csv_number(p.experimental.mean),
@@ -18,14 +18,51 @@ CsvWriter fitness_curve_table(const ExperimentAnalysis& a) {
   return t;
 }
 
-CsvWriter comparison_table(const std::vector<Comparison>& list) {
-  CsvWriter t({"statistic", "label", "unit", "feedforward_n", "feedforward_mean", "feedforward_sd", "feedforward_se",
-               "recurrent_n", "recurrent_mean", "recurrent_sd", "recurrent_se", "t", "df", "p", "stars"});
+CsvWriter comparison_table(const std::vector<Comparison>& list, const std::string& control,
+                           const std::string& experimental) {
+  const std::string c = arm_column(control), e = arm_column(experimental);
+  CsvWriter t({"statistic", "label", "unit", c + "_n", c + "_mean", c + "_sd", c + "_se", e + "_n", e + "_mean",
+               e + "_sd", e + "_se", "t", "df", "p", "stars"});
   for (const auto& c : list)
     t.add_row({c.key, c.label, c.unit, std::to_string(c.control.n), csv_number(c.control.mean),
                csv_number(c.control.sd), csv_number(c.control.se), std::to_string(c.experimental.n),
                csv_number(c.experimental.mean), csv_number(c.experimental.sd), csv_number(c.experimental.se),
                csv_number(c.test.t), csv_number(c.test.df), csv_number(c.test.p), c.stars});
+  return t;
+}
+
+std::vector<std::array<double, 6>> mean_outcome_shares(const std::vector<RunAnalysis>& runs) {
+  std::vector<std::array<double, 6>> sum;
+  std::vector<int> n;
+  for (const auto& r : runs)
+    for (size_t g = 0; g < r.outcome_shares.size(); ++g) {
+      if (g >= sum.size()) {
+        sum.resize(g + 1, std::array<double, 6>{});
+        n.resize(g + 1, 0);
+      }
+      for (size_t k = 0; k < 6; ++k) sum[g][k] += r.outcome_shares[g][k];
+      ++n[g];
+    }
+  for (size_t g = 0; g < sum.size(); ++g)
+    for (auto& x : sum[g]) x /= n[g];
+  return sum;
+}
+
+CsvWriter outcome_shares_table(const ExperimentAnalysis& a) {
+  CsvWriter t({"arm", "generation", "runs", "not_simulated", "completed", "stopped_early", "accel_fault",
+               "rolling_contact", "rolling_spin"});
+  for (const auto* side : {&a.control, &a.experimental}) {
+    if (side->empty()) continue;
+    const std::string arm = side == &a.control ? a.control_arm : a.experimental_arm;
+    const auto shares = mean_outcome_shares(*side);
+    for (size_t g = 0; g < shares.size(); ++g) {
+      int runs = 0;
+      for (const auto& r : *side) runs += g < r.outcome_shares.size();
+      std::vector<std::string> row = {arm, std::to_string(g), std::to_string(runs)};
+      for (double x : shares[g]) row.push_back(csv_number(x));
+      t.add_row(row);
+    }
+  }
   return t;
 }
 
@@ -37,14 +74,14 @@ CsvWriter runs_table(const ExperimentAnalysis& a) {
                "ground_spheres", "ground_fraction", "nodes", "hidden", "hidden_sigmoid", "hidden_cosine",
                "hidden_gaussian", "hidden_other", "link_genes", "links", "forward_links", "recurrent_links",
                "new_champions", "new_champions_topology_changed", "gains_not_simulated", "gains_unknown",
-               "undecodable_messages"});
+               "undecodable_messages", "max_spheres", "max_d"});
   for (const auto* side : {&a.control, &a.experimental})
     for (const auto& r : *side) {
       const auto& m = r.morphology;
       const auto& g = r.genotype;
       int changed = 0;
       for (const auto& c : r.changes.changes) changed += c.topology_changed;
-      t.add_row({r.path, r.run_id, regime_label(r.regime), std::to_string(r.seed), std::to_string(r.population),
+      t.add_row({r.path, r.run_id, regime_label(r), std::to_string(r.seed), std::to_string(r.population),
                  std::to_string(r.generations_requested), std::to_string(r.best_so_far.size()),
                  std::to_string(r.steps), r.complete ? "1" : "0",
                  r.best_so_far.empty() ? "nan" : csv_number(r.best_so_far.back()), r.has_best ? "1" : "0",
@@ -59,7 +96,7 @@ CsvWriter runs_table(const ExperimentAnalysis& a) {
                  csv_number(g.forward_links), csv_number(g.recurrent_links),
                  std::to_string(r.changes.changes.size()), std::to_string(changed),
                  std::to_string(r.changes.not_simulated), std::to_string(r.changes.unknown),
-                 std::to_string(r.undecodable)});
+                 std::to_string(r.undecodable), std::to_string(r.max_spheres), csv_number(r.max_d)});
     }
   return t;
 }
@@ -70,7 +107,7 @@ CsvWriter champion_change_table(const ExperimentAnalysis& a) {
   for (const auto* side : {&a.control, &a.experimental})
     for (const auto& r : *side)
       for (const auto& c : r.changes.changes)
-        t.add_row({r.run_id, regime_label(r.regime), std::to_string(r.seed), std::to_string(c.generation),
+        t.add_row({r.run_id, regime_label(r), std::to_string(r.seed), std::to_string(c.generation),
                    std::to_string(c.previous_id), std::to_string(c.genome_id), csv_number(c.previous_fitness),
                    csv_number(c.fitness), csv_number(c.improvement), c.topology_changed ? "1" : "0"});
   return t;

@@ -7,10 +7,12 @@
 
 namespace robozoo {
 
-GenotypeStats genotype_stats(const genome_t& g) {
+GenotypeStats genotype_stats(const cppn_genome_t& g) {
   GenotypeStats s;
   std::map<int32_t, size_t> index;
+  std::vector<double> position;
   for (const auto& nd : g.nodes) {
+    position.push_back(nd.position);
     if (!index.emplace(nd.id, index.size()).second)
       throw std::invalid_argument("genome " + std::to_string(g.genome_id) + " has node " + std::to_string(nd.id) +
                                   " twice");
@@ -51,12 +53,13 @@ GenotypeStats genotype_stats(const genome_t& g) {
       for (size_t w : out[u]) stack.push_back(w);
     }
   }
-  // from -> to lies on a cycle exactly when `from` is reachable from `to` (or from == to).
   for (const auto& [from, to] : enabled) {
-    if (from == to || reach[to][from])
-      s.recurrent_links += 1;
-    else
+    if (position[from] < position[to])
       s.forward_links += 1;
+    else
+      s.recurrent_links += 1;
+    // from -> to lies on a cycle exactly when `from` is reachable from `to` (or from == to).
+    if (from == to || reach[to][from]) s.cycle_links += 1;
   }
   return s;
 }

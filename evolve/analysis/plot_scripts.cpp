@@ -75,10 +75,10 @@ std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std
     << "set key top left\nset grid\nset style fill transparent solid 0.15 noborder\n"
     << "plot $curve using 1:($2-$3):($2+$3) with filledcurves lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($4-$5):($4+$5) with filledcurves lc rgb \"#d62728\" notitle, \\\n"
-    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title \"control: feed-forward CPPNs\", \\\n"
+    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title \"control: " << style.control_label << " CPPNs\", \\\n"
     << "     $curve using 1:($2-$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($2+$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
-    << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title \"experimental: recurrent CPPNs\", \\\n"
+    << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title \"experimental: " << style.experimental_label << " CPPNs\", \\\n"
     << "     $curve using 1:($4-$5) with lines dt 3 lc rgb \"#d62728\" notitle, \\\n"
     << "     $curve using 1:($4+$5) with lines dt 3 lc rgb \"#d62728\" notitle\n";
   s << "unset output\n";
@@ -105,7 +105,8 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
   }
   s << "set multiplot layout " << rows << "," << columns << " title " << gnuplot_quote(title) << "\n"
     << "set style fill solid 1.0 border rgb \"black\"\nset boxwidth 0.6\nset xrange [-0.6:1.6]\n"
-    << "set xtics (\"feed-forward\" 0, \"recurrent\" 1) scale 0\nset grid ytics\nset key off\n"
+    << "set xtics (" << gnuplot_quote(style.control_label) << " 0, " << gnuplot_quote(style.experimental_label)
+    << " 1) scale 0\nset grid ytics\nset key off\n"
     << "set offsets 0, 0, graph 0.1, 0\n";
   for (int i = 0; i < n; ++i) {
     const Comparison& c = comparisons[static_cast<size_t>(i)];
@@ -126,6 +127,36 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
       << "     $p" << i << " using 1:2:3 with yerrorbars lc rgb \"black\" pt 7 ps 0.5\n";
   }
   s << "unset multiplot\nunset output\n";
+  return s.str();
+}
+
+std::string outcome_shares_script(const std::vector<std::array<double, 6>>& shares, const std::string& png_path,
+                                  const std::string& title, const PlotStyle& style) {
+  if (shares.empty()) throw std::invalid_argument("outcome_shares_script: no generation to plot");
+  static const char* names[6] = {"not simulated", "completed", "stopped early", "acceleration fault",
+                                 "rolling (contact)", "rolling (spin)"};
+  static const char* colours[6] = {"#bbbbbb", "#2ca02c", "#1f77b4", "#d62728", "#ff7f0e", "#9467bd"};
+  std::ostringstream s;
+  s << terminal(png_path, style);
+  s << "$shares << EOD\n# generation, then cumulative per cent of the outcomes in generation_t's order\n";
+  for (size_t g = 0; g < shares.size(); ++g) {
+    s << g;
+    double sum = 0;
+    for (double x : shares[g]) {
+      sum += 100.0 * x;
+      s << ' ' << num(sum);
+    }
+    s << '\n';
+  }
+  s << "EOD\n";
+  s << "set title " << gnuplot_quote(title) << "\n"
+    << "set xlabel \"generation\"\nset ylabel \"share of the population (%)\"\nset yrange [0:100]\n"
+    << "set key outside right\nset style fill solid 0.8 noborder\nplot ";
+  for (int k = 5; k >= 0; --k) {
+    s << "$shares using 1:" << (k + 2) << " with filledcurves x1 lc rgb \"" << colours[k] << "\" title "
+      << gnuplot_quote(names[k]) << (k > 0 ? ", \\\n     " : "\n");
+  }
+  s << "unset output\n";
   return s.str();
 }
 

@@ -3,6 +3,7 @@
 // (gnuplot datablocks), so it can be re-run or edited by hand next to its PNG.
 // Colours follow the paper: control (feed-forward) blue lines / white bars,
 // experimental (recurrent) red.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@ struct PlotStyle {
   int width = 1200;   ///< image width (pixels)
   int height = 800;   ///< image height (pixels)
   std::string font = "DejaVu Sans,11";  ///< pngcairo font
+  std::string control_label = "feed-forward";   ///< the control arm, for keys and axes
+  std::string experimental_label = "recurrent"; ///< the experimental arm
 };
 
 /// Figure 1: mean best-so-far fitness per generation of each regime, with +-1
@@ -27,6 +30,12 @@ std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std
 std::string comparison_panels_script(const std::vector<Comparison>& comparisons, const std::string& png_path,
                                      const std::string& title, int columns, const PlotStyle& style = {},
                                      double share_scale = 100.0);
+
+/// The share of each outcome per generation, averaged over an arm's runs
+/// (`shares[g][k]`: generation g, outcome k in generation_t's order), as
+/// stacked areas.
+std::string outcome_shares_script(const std::vector<std::array<double, 6>>& shares, const std::string& png_path,
+                                  const std::string& title, const PlotStyle& style = {});
 
 /// Escapes a string for a double-quoted gnuplot string literal.
 std::string gnuplot_quote(const std::string& s);

@@ -1,5 +1,6 @@
 #include "evolve/analysis/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -35,22 +36,23 @@ const std::vector<Comparison>& group_list(const ExperimentAnalysis& a, ClaimGrou
   return a.fitness;
 }
 
-// Whether robozoo's comparison goes the paper's way.
+// Whether robozoo's comparison goes the paper's way. Only a significant
+// difference (p < 0.05) can agree or disagree; anything else cannot decide.
 std::string agreement(const PaperClaim& claim, const Comparison& c) {
   if (claim.direction == 2) return "—";
   if (c.control.n < 2 || c.experimental.n < 2 || std::isnan(c.test.p)) return "too few data";
-  const bool sig = c.test.p < 0.05;
+  if (!(c.test.p < 0.05)) return "inconclusive (p ≥ 0.05)";
   const double diff = c.experimental.mean - c.control.mean;
-  if (claim.direction == 0) return sig ? "no: robozoo finds a significant difference" : "yes (no significant difference)";
+  if (claim.direction == 0) return "no: robozoo finds a significant difference";
   if (diff == 0) return "no: no difference";
   const bool same_way = claim.direction > 0 ? diff > 0 : diff < 0;
-  if (!same_way) return sig ? "no: significant, the other way" : "no: the other way, not significant";
-  if (claim.significant && !sig) return "same direction, not significant";
-  return sig ? "yes, significant" : "yes (same direction)";
+  if (!same_way) return "no: significant, the other way";
+  return claim.significant ? "yes, significant" : "yes, significant (the paper: not significant)";
 }
 
-void comparison_table(std::ostringstream& s, const std::vector<Comparison>& list) {
-  s << "| statistic | unit | feed-forward (mean ± s.e., n) | recurrent (mean ± s.e., n) | t | p |  |\n"
+void comparison_table(std::ostringstream& s, const std::vector<Comparison>& list, const ExperimentAnalysis& a) {
+  s << "| statistic | unit | " << arm_title(a.control_arm) << " (mean ± s.e., n) | " << arm_title(a.experimental_arm)
+    << " (mean ± s.e., n) | t | p |  |\n"
     << "|---|---|---|---|---|---|---|\n";
   for (const auto& c : list) {
     const double k = c.unit == "share" ? 100.0 : 1.0;
@@ -83,13 +85,14 @@ std::string markdown_report(const ReportInputs& in) {
   s << "# " << in.title << "\n\n";
   if (!in.source.empty()) s << "Logs: `" << in.source << "`.\n\n";
   for (const auto& p : in.preamble) s << p << "\n\n";
-  s << "Control: feed-forward CPPNs, " << a.control.size() << " runs; experimental: recurrent CPPNs, "
-    << a.experimental.size() << " runs. Every p-value is Student's two-sample t-test with equal variances "
+  s << "Control: " << arm_title(a.control_arm) << " CPPNs, " << a.control.size() << " runs; experimental: "
+    << arm_title(a.experimental_arm) << " CPPNs, " << a.experimental.size() << " runs. Every p-value is Student's two-sample t-test with equal variances "
     << "(SciPy's `ttest_ind`, as in the paper; t distribution from Boost.Math): * p < 0.05, ** p < 0.01, "
     << "*** p < 0.001.\n\n";
 
   s << "## The paper's claims beside robozoo's figures\n\n"
-    << "| statistic | paper (Auerbach & Bongard) | robozoo feed-forward | robozoo recurrent | p | robozoo agrees |\n"
+    << "| statistic | paper (Auerbach & Bongard) | robozoo " << arm_title(a.control_arm) << " | robozoo "
+    << arm_title(a.experimental_arm) << " | p | robozoo agrees |\n"
     << "|---|---|---|---|---|---|\n";
   for (const auto& claim : paper_claims()) {
     const Comparison* c = find_comparison(group_list(a, claim.group), claim.key);
@@ -106,22 +109,41 @@ std::string markdown_report(const ReportInputs& in) {
   if (!in.fitness_png.empty()) s << "![Figure 1](" << in.fitness_png << ")\n\n";
   s << "Mean best-so-far fitness over the runs of each regime; dotted lines and shading: ± one standard error "
        "(`fitness_curve.csv`).\n\n";
-  comparison_table(s, a.fitness);
+  comparison_table(s, a.fitness, a);
 
   s << "## Figure 2: body plans of the best-of-run robots\n\n";
   if (!in.morphology_png.empty()) s << "![Figure 2](" << in.morphology_png << ")\n\n";
-  comparison_table(s, a.morphology);
+  comparison_table(s, a.morphology, a);
   if (a.control_without_poses + a.experimental_without_poses > 0)
     s << "Best-of-run robots without a logged pose stream (never simulated; their ground statistics count as 0): "
-      << a.control_without_poses << " feed-forward, " << a.experimental_without_poses << " recurrent.\n\n";
+      << a.control_without_poses << " " << arm_title(a.control_arm) << ", " << a.experimental_without_poses << " "
+      << arm_title(a.experimental_arm) << ".\n\n";
 
   s << "## Figure 3: CPPNs of the best-of-run robots\n\n";
   if (!in.genotype_png.empty()) s << "![Figure 3](" << in.genotype_png << ")\n\n";
-  comparison_table(s, a.genotype);
+  comparison_table(s, a.genotype, a);
 
   s << "## Section 4: new champions\n\n";
   if (!in.champion_png.empty()) s << "![New champions](" << in.champion_png << ")\n\n";
-  comparison_table(s, a.champion);
+  comparison_table(s, a.champion, a);
+
+  s << "## Outcomes and reach\n\n";
+  for (const auto& png : in.outcome_pngs) s << "![outcome shares](" << png << ")\n\n";
+  s << "Share of each evaluation outcome per generation, averaged over the runs of each arm "
+       "(`outcome_shares.csv`).\n\n";
+  auto max_d = [](const std::vector<RunAnalysis>& side) {
+    double d = 0;
+    for (const auto& r : side) d = std::max(d, r.max_d);
+    return d;
+  };
+  s << "Largest d (displacement towards the target) any logged robot reached: " << fmt(max_d(a.control), 3)
+    << " m (" << arm_title(a.control_arm) << "), " << fmt(max_d(a.experimental), 3) << " m ("
+    << arm_title(a.experimental_arm) << ")";
+  if (in.target_distance > 0)
+    s << ", of the " << fmt(in.target_distance, 1) << " m from the start to the target: fitness did "
+      << (std::max(max_d(a.control), max_d(a.experimental)) < 0.9 * in.target_distance ? "not " : "")
+      << "come near its ceiling";
+  s << ".\n\n";
 
   s << "## Figure 4: the zoo\n\n";
   for (const auto& z : in.zoo) {

@@ -23,6 +23,8 @@ struct ReportInputs {
   std::string morphology_png;             ///< Figure 2
   std::string genotype_png;               ///< Figure 3
   std::string champion_png;               ///< champion-change figure
+  std::vector<std::string> outcome_pngs;  ///< outcome shares per generation, one plot per arm
+  double target_distance = 0;             ///< distance from the origin to the target (m; 0: unknown)
   std::vector<ZooSheet> zoo;              ///< Figure 4
   std::vector<std::string> notes;         ///< skipped logs, decisions, anything a reader must know
   std::vector<std::string> commands;      ///< how to reproduce (shell lines)

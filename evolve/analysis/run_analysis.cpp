@@ -9,6 +9,17 @@ RunAnalysis analyze_run(const RunSummary& run, const AnalysisParams& params) {
   a.path = run.path;
   a.run_id = run.run_id;
   a.regime = run.regime;
+  a.arm = run.arm;
+  a.max_spheres = run.max_spheres;
+  a.max_d = run.max_d;
+  a.target_distance = run.target_distance;
+  for (const auto& g : run.generations) {
+    std::array<double, 6> share{};
+    double n = 0;
+    for (int32_t k : g.outcomes) n += k;
+    for (size_t k = 0; k < share.size(); ++k) share[k] = n > 0 ? g.outcomes[k] / n : 0.0;
+    a.outcome_shares.push_back(share);
+  }
   a.seed = run.seed;
   a.population = run.population;
   a.generations_requested = run.generations_requested;

@@ -1,9 +1,12 @@
 #include "evolve/analysis/run_summary.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "evolve/config/run_config.hpp"
+#include "evolve/experiment/trial_plan.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
 
@@ -40,6 +43,17 @@ RunSummary summarize_run(const LogContents& log, const std::string& path) {
       s.population = m.population;
       s.generations_requested = m.generations;
       s.steps = m.steps;
+      try {
+        const RunConfig c = config_from_json(nlohmann::json::parse(m.config_json));
+        // run_t's regime is authoritative; the start topology comes from the configuration.
+        s.arm = arm_name(arm_of(m.regime == 0 ? Regime::FeedForward : Regime::Recurrent, c.neat.initial_links));
+        s.max_spheres = c.eval.growth.max_spheres;
+        const auto& sim = c.eval.sim;
+        s.target_distance = std::sqrt(sim.target_x * sim.target_x + sim.target_y * sim.target_y +
+                                      sim.target_z * sim.target_z);
+      } catch (const std::exception&) {
+        s.arm = m.regime == 0 ? "feedforward" : "recurrent";  // a configuration this robozoo cannot read
+      }
     } else if (r.channel == kChannelGeneration) {
       generation_t m;
       if (!safe_decode(r.data.data(), r.data.size(), m)) {
@@ -52,6 +66,8 @@ RunSummary summarize_run(const LogContents& log, const std::string& path) {
       g.mean_fitness = m.mean_fitness;
       g.best_so_far_fitness = m.best_so_far_fitness;
       g.champion_id = m.champion_id;
+      g.outcomes = {m.n_not_simulated, m.n_completed,       m.n_stopped_early,
+                    m.n_accel_fault,   m.n_rolling_contact, m.n_rolling_spin};
       gens[m.generation] = g;  // the last record of a generation wins
     }
   }
@@ -63,11 +79,12 @@ RunSummary summarize_run(const LogContents& log, const std::string& path) {
   std::map<int32_t, morphology_t> morphs;
   for (const auto& r : log.records) {
     if (r.channel == kChannelGenome) {
-      genome_t m;
+      cppn_genome_t m;
       if (!safe_decode(r.data.data(), r.data.size(), m)) {
         ++s.undecodable;
         continue;
       }
+      if (std::isfinite(m.d_term)) s.max_d = std::max(s.max_d, m.d_term);
       const auto g = gens.find(m.generation);
       if (g == gens.end() || g->second.champion_id != m.genome_id) continue;
       ChampionRecord c;

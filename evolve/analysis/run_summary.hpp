@@ -4,13 +4,14 @@
 // (genome and morphology) and the lowest height each sphere reached in each
 // logged pose stream. Read with safe_decode: a log is never trusted; a message
 // that does not decode is counted and skipped.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "evolve/io/event_log.hpp"
-#include "robozoo/genome_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 
 namespace robozoo {
@@ -21,11 +22,15 @@ struct GenerationRecord {
   double mean_fitness = 0;           ///< fitness units
   double best_so_far_fitness = 0;    ///< fitness units
   int64_t champion_id = -1;          ///< genome id of the generation's champion
+  /// Outcome counts of the generation (generation_t), in the outcome order:
+  /// not simulated, completed, stopped early, acceleration fault, rolling by
+  /// contact, rolling by spin (count).
+  std::array<int32_t, 6> outcomes{};
 };
 
 struct ChampionRecord {
   int32_t generation = 0;        ///< generation the champion won
-  genome_t genome;               ///< its logged genome (fitness, outcome, nodes, links)
+  cppn_genome_t genome;               ///< its logged genome (fitness, outcome, nodes, links)
   bool has_morphology = false;   ///< its morphology was logged and decoded
   morphology_t morphology;       ///< valid when has_morphology
 };
@@ -36,6 +41,10 @@ struct RunSummary {
   std::string software_version;
   int64_t seed = 0;
   int8_t regime = 0;                  ///< 0 feed-forward, 1 recurrent (run_t)
+  std::string arm = "feedforward";    ///< the experiment arm of its configuration (arm_of)
+  int32_t max_spheres = 0;            ///< growth.max_spheres of its configuration (count; 0 if unknown)
+  double max_d = 0;                   ///< the largest d term of any logged genome (m)
+  double target_distance = 0;         ///< distance from the origin to the target (m; 0 if unknown)
   int32_t population = 0;             ///< genomes per generation (count)
   int32_t generations_requested = 0;  ///< generations the run was started for (count)
   int32_t steps = 0;                  ///< physics steps per evaluation (count)

@@ -72,8 +72,6 @@ void write_text(const std::string& path, const std::string& text) {
   if (!f) throw std::runtime_error("cannot write " + path);
 }
 
-std::string regime_title(int8_t r) { return r == 0 ? "feed-forward" : "recurrent"; }
-std::string regime_file(int8_t r) { return r == 0 ? "feedforward" : "recurrent"; }
 
 }  // namespace
 
@@ -105,11 +103,11 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
       progress << "  " << name << ": skipped: " << e.what() << "\n";
       continue;
     }
-    progress << "  " << name << ": " << regime_title(a.regime) << " seed " << a.seed << ", "
+    progress << "  " << name << ": " << arm_title(a.arm) << " seed " << a.seed << ", "
              << a.best_so_far.size() << " generations, best " << (a.best_so_far.empty() ? 0.0 : a.best_so_far.back())
              << "\n";
     sizes.insert({a.population, a.generations_requested, a.steps});
-    per_regime_logs[regime_file(a.regime)].push_back(path);
+    per_regime_logs[a.arm].push_back(path);
     try {
       if (fs::exists(path + ".checkpoint")) {
         evolve_seconds += read_checkpoint(path + ".checkpoint").elapsed_seconds;
@@ -121,8 +119,12 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     runs.push_back(std::move(a));
   }
   if (runs.empty()) throw std::invalid_argument("no usable run in " + o.log_dir);
-  out.analysis = analyze_experiment(std::move(runs));
+  out.analysis = analyze_experiment(std::move(runs), o.control_arm, o.experimental_arm);
   const ExperimentAnalysis& A = out.analysis;
+  if (A.control.empty() && A.experimental.empty())
+    throw std::invalid_argument("no run of the arms " + o.control_arm + " and " + o.experimental_arm + " in " +
+                                o.log_dir);
+  const std::string ctl = arm_title(A.control_arm), exp = arm_title(A.experimental_arm);
 
   fs::create_directories(out.out_dir);
   auto file = [&out](const std::string& name) {
@@ -130,10 +132,11 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     return (fs::path(out.out_dir) / name).string();
   };
   fitness_curve_table(A).write(file("fitness_curve.csv"));
-  comparison_table(A.fitness).write(file("fitness.csv"));
-  comparison_table(A.morphology).write(file("morphology.csv"));
-  comparison_table(A.genotype).write(file("genotype.csv"));
-  comparison_table(A.champion).write(file("champion_changes.csv"));
+  comparison_table(A.fitness, A.control_arm, A.experimental_arm).write(file("fitness.csv"));
+  comparison_table(A.morphology, A.control_arm, A.experimental_arm).write(file("morphology.csv"));
+  comparison_table(A.genotype, A.control_arm, A.experimental_arm).write(file("genotype.csv"));
+  comparison_table(A.champion, A.control_arm, A.experimental_arm).write(file("champion_changes.csv"));
+  outcome_shares_table(A).write(file("outcome_shares.csv"));
   champion_change_table(A).write(file("champion_change_events.csv"));
   runs_table(A).write(file("runs.csv"));
 
@@ -142,8 +145,8 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   rep.source = o.log_dir;
   rep.preamble = o.notes;
   {
-    std::string p = "Data: " + std::to_string(A.control.size()) + " feed-forward and " +
-                    std::to_string(A.experimental.size()) + " recurrent runs";
+    std::string p = "Data: " + std::to_string(A.control.size()) + " " + ctl + " and " +
+                    std::to_string(A.experimental.size()) + " " + exp + " runs";
     for (const auto& [pop, gens, steps] : sizes)
       p += "; population " + std::to_string(pop) + ", " + std::to_string(gens) + " generations, " +
            std::to_string(steps) + " steps per evaluation";
@@ -154,6 +157,11 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     rep.preamble.insert(rep.preamble.begin(), p);
   }
   if (sizes.size() > 1) rep.notes.push_back("The runs do not all have the same sizes: compare with care.");
+  if (!A.other.empty())
+    rep.notes.push_back(std::to_string(A.other.size()) + " runs of other arms are in the folder and not compared "
+                        "here (robozoo-stats --compare chooses the two arms).");
+  for (const auto* side : {&A.control, &A.experimental})
+    if (!side->empty() && side->front().target_distance > 0) rep.target_distance = side->front().target_distance;
   for (const auto& s : out.skipped) rep.notes.push_back("Left out: " + s);
   rep.notes.push_back(
       "Best-of-run robot: the champion with the highest fitness in a run (the earliest, among equals). Leaves: "
@@ -162,7 +170,9 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
       "radius was at most " + csv_number(o.analysis.morphology.ground_epsilon) +
       " m at some pose of the champion's logged pose stream (every k-th step of its simulation).");
   rep.notes.push_back(
-      "CPPN links are the enabled link genes; a forward link lies on no directed cycle of the expressed network.");
+      "CPPN links are the enabled link genes; a forward link goes from a node at a lower drawing position to one at "
+      "a higher (HyperNEAT's definition, docs/method.md section 2.2), every other one is recurrent; links on a "
+      "directed cycle of the expressed network are counted apart.");
   rep.notes.push_back(std::string("New champion: a generation whose champion is fitter than the previous "
                                   "generation's") +
                       (o.analysis.changes.simulated_only ? ", both champions simulated (gains of the r term before "
@@ -184,17 +194,21 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
       out.files.push_back(stem + ".png");
       return stem + ".png";
     };
-    PlotStyle wide;
+    PlotStyle labels;
+    labels.control_label = ctl;
+    labels.experimental_label = exp;
+    PlotStyle wide = labels;
     wide.width = 1500;
     wide.height = 1050;
     rep.fitness_png = plot("fig1_fitness", fitness_curve_script(A.fitness_curve, "fig1_fitness.png",
-                                                                "Figure 1: mean best-so-far fitness, ± 1 s.e."));
+                                                                "Figure 1: mean best-so-far fitness, ± 1 s.e.",
+                                                                labels));
     rep.morphology_png = plot("fig2_morphology",
                               comparison_panels_script(A.morphology, "fig2_morphology.png",
-                                                       "Figure 2: best-of-run robots (mean ± 1 s.e.; white "
-                                                       "feed-forward, red recurrent)",
+                                                       "Figure 2: best-of-run robots (mean ± 1 s.e.; white " +
+                                                           ctl + ", red " + exp + ")",
                                                        4, wide));
-    PlotStyle mid;
+    PlotStyle mid = labels;
     mid.width = 1500;
     mid.height = 750;
     rep.genotype_png = plot("fig3_genotype",
@@ -203,6 +217,15 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     rep.champion_png = plot("champion_changes",
                             comparison_panels_script(A.champion, "champion_changes.png",
                                                      "Section 4: new champions (mean ± 1 s.e.)", 3, mid));
+    for (const auto* side : {&A.control, &A.experimental}) {
+      if (side->empty()) continue;
+      const std::string arm = side == &A.control ? A.control_arm : A.experimental_arm;
+      rep.outcome_pngs.push_back(plot("outcomes-" + arm, outcome_shares_script(mean_outcome_shares(*side),
+                                                                               "outcomes-" + arm + ".png",
+                                                                               "Outcome shares per generation: " +
+                                                                                   arm_title(arm) + " CPPNs",
+                                                                               labels)));
+    }
   }
 
   std::string render = o.render;
@@ -213,10 +236,10 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
       render = "robozoo-render";
     }
   }
-  for (int8_t r : {int8_t{0}, int8_t{1}}) {
+  for (const std::string& arm : {A.control_arm, A.experimental_arm}) {
     ZooSheet z;
-    z.regime = regime_title(r);
-    const auto& regime_logs = per_regime_logs[regime_file(r)];
+    z.regime = arm_title(arm);
+    const auto& regime_logs = per_regime_logs[arm];
     if (!o.zoo) {
       z.note = "not made (--no-zoo)";
     } else if (regime_logs.empty()) {
@@ -228,7 +251,7 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
       const std::string shown = !ec && !rel.empty() && rel.string().rfind("..", 0) != 0 ? rel.string() : render;
       z.note = "robozoo-render is missing (looked for " + shown + "), so no zoo sheet was made";
     } else {
-      const std::string png = "zoo-" + regime_file(r) + ".png";
+      const std::string png = "zoo-" + arm + ".png";
       std::vector<std::string> argv = {render, "zoo"};
       argv.insert(argv.end(), regime_logs.begin(), regime_logs.end());
       argv.insert(argv.end(), {"-o", (fs::path(out.out_dir) / png).string(), "--best-of-run"});
@@ -253,8 +276,11 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     rep.commands.push_back("# this experiment");
     rep.commands.push_back("build/bin/robozoo-experiment --trials " + std::to_string(trials) + " --generations " +
                            std::to_string(gens) + " --population " + std::to_string(pop) +
-                           (steps != 2500 ? " --steps " + std::to_string(steps) : std::string()) + " --out " +
-                           o.log_dir);
+                           (steps != 2500 ? " --steps " + std::to_string(steps) : std::string()) +
+                           (A.control_arm != "feedforward" || A.experimental_arm != "recurrent"
+                                ? " --arms " + A.control_arm + "," + A.experimental_arm
+                                : std::string()) +
+                           " --out " + o.log_dir);
     rep.commands.push_back("build/bin/robozoo-stats " + o.log_dir);
     rep.commands.push_back("# the paper's full size (30 trials per regime, population 150, 500 generations), on a "
                            "bigger machine");

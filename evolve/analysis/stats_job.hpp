@@ -22,6 +22,8 @@ struct StatsOptions {
   bool zoo = true;                   ///< make zoo sheets with robozoo-render
   std::string render;                ///< the robozoo-render program (empty: next to the running program)
   std::string title = "robozoo: recurrent vs feed-forward CPPNs";
+  std::string control_arm = "feedforward";     ///< the arm compared as the control
+  std::string experimental_arm = "recurrent";  ///< the arm compared as the experimental regime
   std::vector<std::string> notes;    ///< paragraphs for the top of the report
 };
 

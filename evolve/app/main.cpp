@@ -17,6 +17,7 @@
 #include "evolve/app/run_command.hpp"
 #include "evolve/run/stop_signals.hpp"
 #include "evolve/parallel/mpi/mpi_session.hpp"
+#include "evolve/core/version.hpp"
 
 namespace {
 /// --mpi must be known before parsing: MPI starts first, so that only rank 0 speaks.
@@ -49,7 +50,7 @@ int main(int argc, char** argv) {
       "to the LCM bus); a checkpoint after every generation lets --resume continue a killed run.\n"
       "On a cluster: mpirun -np N robozoo-evolve --mpi ... (rank 0 evolves, the others evaluate).\n"
       "Precedence of settings: defaults < --preset < --config FILE < command-line flags."};
-  app.set_version_flag("--version", ROBOZOO_VERSION);
+  app.set_version_flag("--version", robozoo::version_line());
   robozoo::RunOptions run;
   robozoo::add_run_options(app, run);
   robozoo::EvalOptions eval;

@@ -42,6 +42,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--workers", o.workers, "worker processes evaluating genomes (default: number of cores)")
       ->check(CLI::Range(1, 4096));
   app.add_option("--config", o.config_file, "configuration file (.json or .toml) with any parameter of the method");
+  app.add_option("--set", o.sets,
+                 "set one configuration key, after --config: KEY=VALUE with a dotted key and a JSON value or a "
+                 "bare name (e.g. neat.initial_links=inputs_to_outputs, sim.target_x=20); repeatable")
+      ->take_all();
   app.add_option("--preset", o.preset, "short (the README's ~5-minute job) or paper (the paper's sizes)");
   app.add_option("--log", o.log_path, "the run's LCM log (default: runs/<run id>.lcmlog)");
   app.add_option("--lcm-url", o.lcm_url, "publish live on this LCM URL (given alone: LCM's default URL)")
@@ -51,6 +55,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(CLI::Range(1, 1000000000));
   app.add_flag("--publish-all", o.publish_all, "publish every genome and morphology, not only champions");
   app.add_flag("--resume", o.resume, "continue the run of --log from its checkpoint");
+  app.add_flag("--force", o.force,
+               "with --resume: continue a run whose checkpoint another robozoo version (git commit) wrote");
   app.add_option("--run-id", o.run_id, "identifier of the run (default: <regime>-s<seed>)");
   app.add_option("--job-timeout", o.job_timeout, "seconds before a hung evaluation's worker is replaced")
       ->check(CLI::PositiveNumber);
@@ -81,6 +87,7 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
   try {
     config = o.preset.empty() ? RunConfig{} : preset_config(o.preset);
     if (!o.config_file.empty()) config = load_config_file(o.config_file, config);
+    for (const auto& kv : o.sets) config = config_from_json(config_assignment(kv), config);
     if (app.count("--regime")) config.regime = regime_from_name(o.regime);
     if (app.count("--seed")) config.seed = o.seed;
     if (app.count("--population")) config.neat.population = o.population;
@@ -95,6 +102,11 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
     }
     opts.run_id = o.run_id;
     opts.resume = o.resume;
+    opts.force_version = o.force;
+    if (o.force && !o.resume) {
+      std::cerr << "robozoo-evolve: --force only applies to --resume\n";
+      return 2;
+    }
     if (app.count("--lcm-url")) opts.lcm_url = o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url;
     const std::string id = o.run_id.empty() ? default_run_id(config) : o.run_id;
     opts.log_path = o.log_path.empty() ? "runs/" + id + ".lcmlog" : o.log_path;

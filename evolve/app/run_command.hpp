@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "evolve/config/run_config.hpp"
 #include "evolve/run/evolution.hpp"
@@ -23,6 +24,8 @@ struct RunOptions {
   int pose_every = 4;
   bool publish_all = false;
   bool resume = false;
+  bool force = false;
+  std::vector<std::string> sets;  ///< --set KEY=VALUE overrides, in order
   std::string run_id;
   double job_timeout = 600.0;
   bool quiet = false;

@@ -64,6 +64,23 @@ class FieldTable {
         }};
     return *this;
   }
+  /// An enumerated field written and read by name (`name_of` / `from_name`,
+  /// which throws std::invalid_argument listing the names).
+  template <class E>
+  FieldTable& choice(const std::string& name, E S::*m, std::string (*name_of)(E),
+                     E (*from_name)(const std::string&)) {
+    return custom(
+        name, [m, name_of](const S& s) { return nlohmann::json(name_of(s.*m)); },
+        [m, from_name](S& s, const nlohmann::json& v, const std::string& q) {
+          if (!v.is_string()) fail(q, "must be a name, got " + v.dump());
+          try {
+            s.*m = from_name(v.get<std::string>());
+          } catch (const std::invalid_argument& e) {
+            fail(q, e.what());
+          }
+        });
+  }
+
   /// A field with its own conversion; `read` gets the qualified key for its errors.
   FieldTable& custom(const std::string& name,
                      std::function<nlohmann::json(const S&)> write,

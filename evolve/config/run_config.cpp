@@ -41,6 +41,16 @@ FieldTable<NeatParams> neat_table() {
       .real("interspecies_mating_probability", &NeatParams::interspecies_mating_probability, 0, 1)
       .integer("species_elitism_min_offspring", &NeatParams::species_elitism_min_offspring, 1, kBig)
       .integer("add_link_tries", &NeatParams::add_link_tries, 1, kBig)
+      .choice("link_rule", &NeatParams::link_rule, link_rule_name, link_rule_from_name)
+      .boolean("self_loops", &NeatParams::self_loops)
+      .choice("initial_links", &NeatParams::initial_links, initial_links_name, initial_links_from_name)
+      .choice("add_link", &NeatParams::add_link, add_link_rule_name, add_link_rule_from_name)
+      .choice("add_node", &NeatParams::add_node, add_node_rule_name, add_node_rule_from_name)
+      .choice("compatibility", &NeatParams::compatibility, compatibility_rule_name, compatibility_rule_from_name)
+      .real("disabled_gene_probability", &NeatParams::disabled_gene_probability, 0, 1)
+      .choice("weight_mutation", &NeatParams::weight_mutation, weight_mutation_rule_name,
+              weight_mutation_rule_from_name)
+      .real("weight_replace_probability", &NeatParams::weight_replace_probability, 0, 1)
       .custom(
           "hidden_activations",
           [](const NeatParams& p) {
@@ -188,6 +198,26 @@ Regime regime_from_name(const std::string& s) {
 }
 
 nlohmann::json config_to_json(const RunConfig& c) { return top_table().write(c); }
+
+nlohmann::json config_assignment(const std::string& assignment) {
+  const size_t eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw ConfigError("--set " + assignment + ": expected KEY=VALUE, e.g. neat.initial_links=inputs_to_outputs");
+  const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  nlohmann::json value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (value.is_discarded()) value = text;  // a bare name
+  std::vector<std::string> parts;
+  for (size_t start = 0;;) {
+    const size_t dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (parts.back().empty()) throw ConfigError("--set " + assignment + ": empty part in the key " + key);
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  nlohmann::json j = value;
+  for (auto it = parts.rbegin(); it != parts.rend(); ++it) j = nlohmann::json{{*it, j}};
+  return j;
+}
 
 RunConfig config_from_json(const nlohmann::json& j, RunConfig base) {
   top_table().read(base, j);

@@ -1,7 +1,7 @@
 #pragma once
 // The resolved configuration of one run: everything an evaluation or a replay
 // needs. Serialised whole into run_t.config_json, so a run is reproducible from
-// its first message alone (DESIGN.md section 1).
+// its first message alone (docs/method.md section 1).
 #include <cstdint>
 #include <string>
 
@@ -35,6 +35,11 @@ RunConfig config_from_json(const nlohmann::json& j, RunConfig base = RunConfig{}
 /// Reads a JSON (.json) or TOML (.toml) file and overlays it onto `base`.
 /// Throws ConfigError for an unreadable or malformed file, naming the file.
 RunConfig load_config_file(const std::string& path, RunConfig base = RunConfig{});
+/// One "KEY=VALUE" assignment (robozoo-evolve --set) as the JSON object to
+/// overlay: a dotted KEY names nested sections ("neat.initial_links"); VALUE is
+/// read as JSON (numbers, true/false, quoted strings) and otherwise taken as a
+/// bare string ("inputs_to_outputs"). Throws ConfigError without "=" or a key.
+nlohmann::json config_assignment(const std::string& assignment);
 /// Checks cross-field constraints (r_min <= r_init <= r_max, ...); throws ConfigError.
 void validate_config(const RunConfig& c);
 

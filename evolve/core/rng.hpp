@@ -1,6 +1,6 @@
 #pragma once
 // The single source of randomness of a run. Seeded once from the run's seed
-// and passed explicitly to every function that draws (DESIGN.md section 4).
+// and passed explicitly to every function that draws (docs/method.md section 4).
 //
 // Distributions are implemented here rather than taken from <random>: the
 // standard fixes mt19937_64's output sequence but not the algorithms of

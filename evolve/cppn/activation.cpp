@@ -23,6 +23,9 @@ void activate_row(Activation a, const double* x, double* y, int n) {
     case Activation::Sine:
       for (int p = 0; p < n; ++p) y[p] = std::sin(x[p]);
       return;
+    case Activation::SteepenedSigmoid:
+      for (int p = 0; p < n; ++p) y[p] = activate(Activation::SteepenedSigmoid, x[p]);
+      return;
   }
   for (int p = 0; p < n; ++p) y[p] = 0.0;
 }
@@ -34,6 +37,7 @@ std::string activation_name(Activation a) {
     case Activation::Gaussian: return "gaussian";
     case Activation::Linear: return "linear";
     case Activation::Sine: return "sine";
+    case Activation::SteepenedSigmoid: return "steepened_sigmoid";
   }
   return "unknown";
 }

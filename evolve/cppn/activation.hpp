@@ -1,5 +1,6 @@
 #pragma once
-// CPPN activation functions, with HyperNEAT's definitions (DESIGN.md section 2).
+// CPPN activation functions, with HyperNEAT's definitions (docs/method.md, "The CPPN"),
+// plus the NEAT paper's steepened sigmoid for its XOR check.
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -13,8 +14,9 @@ enum class Activation : int8_t {
   Gaussian = 2,       ///< exp(-x^2)
   Linear = 3,         ///< x (off by default; available for experiments and tests)
   Sine = 4,           ///< sin(x) (off by default)
+  SteepenedSigmoid = 5,  ///< 1 / (1 + e^(-4.9 x)), in (0, 1): the NEAT paper's (robozoo-xor --preset neat-paper)
 };
-constexpr int kNumActivations = 5;
+constexpr int kNumActivations = 6;
 
 /// The signed sigmoid from e^-x (the batched CPPN path computes e^-x for a whole
 /// row first): the one expression both paths share, so they give the same bits.
@@ -27,6 +29,7 @@ inline double activate(Activation a, double x) {
     case Activation::Gaussian: return std::exp(-x * x);
     case Activation::Linear: return x;
     case Activation::Sine: return std::sin(x);
+    case Activation::SteepenedSigmoid: return 1.0 / (1.0 + std::exp(-4.9 * x));
   }
   return 0.0;
 }
@@ -36,7 +39,8 @@ inline double activate(Activation a, double x) {
 /// the bits are the same; only the loop is shaped for the vector unit.
 void activate_row(Activation a, const double* x, double* y, int n);
 
-/// Short lower-case name ("signed_sigmoid", "signed_cosine", "gaussian", "linear", "sine").
+/// Short lower-case name ("signed_sigmoid", "signed_cosine", "gaussian", "linear", "sine",
+/// "steepened_sigmoid").
 std::string activation_name(Activation a);
 /// Inverse of activation_name; throws std::invalid_argument for an unknown name.
 Activation activation_from_name(const std::string& name);

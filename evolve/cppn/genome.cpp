@@ -1,5 +1,6 @@
 #include "evolve/cppn/genome.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -38,6 +39,12 @@ void validate_genome(const Genome& g, const GenomeLayout& layout) {
     if (n.kind != want)
       fail("node " + std::to_string(n.id) + " has kind " + std::to_string(static_cast<int>(n.kind)) +
            ", expected " + std::to_string(static_cast<int>(want)));
+    const bool fixed_position = want != NodeKind::Hidden;
+    const double want_position = want == NodeKind::Output ? kOutputPosition : kInputPosition;
+    if (fixed_position ? n.position != want_position
+                       : !(n.position >= kInputPosition && n.position <= kOutputPosition))
+      fail("node " + std::to_string(n.id) + " has drawing position " + std::to_string(n.position) +
+           (fixed_position ? ", expected " + std::to_string(want_position) : ", expected one in [0, 1]"));
     kind[n.id] = n.kind;
   }
   for (size_t i = 0; i < g.links.size(); ++i) {
@@ -102,6 +109,9 @@ uint64_t genome_hash(const Genome& g) {
     f.add(n.id);
     f.add(static_cast<int8_t>(n.kind));
     f.add(static_cast<int8_t>(n.activation));
+    uint64_t pos;
+    std::memcpy(&pos, &n.position, sizeof pos);
+    f.add(pos);
   }
   f.add(static_cast<uint64_t>(g.links.size()));
   for (const auto& l : g.links) {
@@ -115,6 +125,24 @@ uint64_t genome_hash(const Genome& g) {
     f.add(l.born);
   }
   return f.h;
+}
+
+double node_position(const Genome& g, int32_t id) {
+  const auto it = std::lower_bound(g.nodes.begin(), g.nodes.end(), id,
+                                   [](const NodeGene& n, int32_t v) { return n.id < v; });
+  if (it == g.nodes.end() || it->id != id)
+    throw std::invalid_argument("genome " + std::to_string(g.id) + " has no node " + std::to_string(id));
+  return it->position;
+}
+
+bool is_forward_link(const Genome& g, const LinkGene& l) {
+  return node_position(g, l.from) < node_position(g, l.to);
+}
+
+int count_recurrent_links(const Genome& g) {
+  int n = 0;
+  for (const auto& l : g.links) n += !is_forward_link(g, l);
+  return n;
 }
 
 int count_hidden(const Genome& g) {

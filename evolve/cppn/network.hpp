@@ -1,5 +1,5 @@
 #pragma once
-// A decoded CPPN, queried as the method prescribes: reset all node values, run
+// A decoded CPPN, queried as docs/method.md section 2 says: reset all node values, run
 // `updates` synchronous updates (every node reads the previous update's values;
 // input nodes hold their input), read the outputs.
 //

@@ -14,10 +14,13 @@ Genome random_cppn(const GenomeLayout& layout, bool recurrent, int hidden_nodes,
 
   Genome g;
   for (int i = 0; i < ni; ++i)
-    g.nodes.push_back({i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear});
-  for (int o = 0; o < no; ++o) g.nodes.push_back({ni + o, NodeKind::Output, layout.output_activation});
+    g.nodes.push_back({i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear,
+                       kInputPosition});
+  for (int o = 0; o < no; ++o)
+    g.nodes.push_back({ni + o, NodeKind::Output, layout.output_activation, kOutputPosition});
   for (int h = 0; h < hidden_nodes; ++h)
-    g.nodes.push_back({h0 + h, NodeKind::Hidden, static_cast<Activation>(rng.uniform_int(0, 2))});
+    g.nodes.push_back({h0 + h, NodeKind::Hidden, static_cast<Activation>(rng.uniform_int(0, 2)),
+                       (h + 1.0) / (hidden_nodes + 1.0)});
 
   std::set<std::pair<int32_t, int32_t>> linked;
   int64_t innovation = 0;

@@ -8,7 +8,8 @@ namespace robozoo {
 /// A random genome that passes validate_genome(g, layout):
 /// - every input (bias included) linked to every output, weights uniform in [-3, 3)
 ///   (HyperNEAT's fully connected start), innovations 0, 1, ... in (input, output) order;
-/// - `hidden_nodes` hidden nodes (ids from layout.first_hidden()), each with an
+/// - `hidden_nodes` hidden nodes (ids from layout.first_hidden()), hidden node k
+///   (0-based) at drawing position (k + 1) / (hidden_nodes + 1), each with an
 ///   activation drawn from codes 0-2 (signed sigmoid, signed cosine, Gaussian), one
 ///   link into it from a random input or earlier hidden node and one link out of it
 ///   to a random output;

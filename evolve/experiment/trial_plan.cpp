@@ -6,7 +6,33 @@
 
 namespace robozoo {
 
-std::string Trial::name() const { return regime_name(regime) + "-s" + std::to_string(seed); }
+std::string arm_name(Arm a) {
+  switch (a) {
+    case Arm::FeedForward: return "feedforward";
+    case Arm::Recurrent: return "recurrent";
+    case Arm::RecurrentSparse: return "recurrent-sparse";
+  }
+  return "unknown";
+}
+
+Arm arm_from_name(const std::string& name) {
+  for (int a = 0; a < kNumArms; ++a)
+    if (arm_name(static_cast<Arm>(a)) == name) return static_cast<Arm>(a);
+  throw std::invalid_argument("unknown arm '" + name + "' (use feedforward, recurrent, recurrent-sparse)");
+}
+
+Regime arm_regime(Arm a) { return a == Arm::FeedForward ? Regime::FeedForward : Regime::Recurrent; }
+
+Arm arm_of(Regime regime, InitialLinks initial_links) {
+  if (regime == Regime::FeedForward) return Arm::FeedForward;
+  return initial_links == InitialLinks::InputsToOutputs ? Arm::RecurrentSparse : Arm::Recurrent;
+}
+
+int64_t trial_seed(Arm a, int trial) {
+  return static_cast<int64_t>(kNumArms) * (trial - 1) + static_cast<int>(a) + 1;
+}
+
+std::string Trial::name() const { return arm_name(arm) + "-s" + std::to_string(seed); }
 
 void validate_experiment(const ExperimentParams& p) {
   auto need = [](bool ok, const std::string& what) {
@@ -24,16 +50,22 @@ void validate_experiment(const ExperimentParams& p) {
   need(p.mpi_ranks == 0 || (!p.mpirun.empty() && !p.mpirun.front().empty()),
        "--mpirun: the MPI launcher is empty");
   need(!p.out_dir.empty(), "--out: the experiment needs a folder");
+  need(!p.arms.empty(), "--arms: the experiment needs at least one arm");
+  for (size_t i = 0; i < p.arms.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      need(p.arms[i] != p.arms[j], "--arms: " + arm_name(p.arms[i]) + " is given twice");
 }
 
 std::vector<Trial> plan_trials(const ExperimentParams& p) {
   validate_experiment(p);
   std::vector<Trial> out;
-  for (int s = 1; s <= p.trials; ++s)
-    for (Regime r : {Regime::FeedForward, Regime::Recurrent}) {
+  for (int k = 1; k <= p.trials; ++k)
+    for (Arm a : p.arms) {
       Trial t;
-      t.regime = r;
-      t.seed = s;
+      t.arm = a;
+      t.regime = arm_regime(a);
+      t.number = k;
+      t.seed = trial_seed(a, k);
       t.log_path = p.out_dir + "/" + t.name() + ".lcmlog";
       t.output_path = p.out_dir + "/" + t.name() + ".out";
       out.push_back(t);
@@ -47,7 +79,8 @@ std::vector<std::string> evolve_arguments(const Trial& t, const ExperimentParams
   // line, so a resume without them would evaluate with the default steps.
   std::vector<std::string> a = {"--log", t.log_path, "--quiet", "--regime", regime_name(t.regime), "--seed",
                                 std::to_string(t.seed), "--population", std::to_string(p.population),
-                                "--generations", std::to_string(p.generations)};
+                                "--generations", std::to_string(p.generations), "--run-id", t.name()};
+  if (t.arm == Arm::RecurrentSparse) a.insert(a.end(), {"--set", "neat.initial_links=inputs_to_outputs"});
   if (p.steps > 0) a.insert(a.end(), {"--steps", std::to_string(p.steps)});
   if (p.workers > 0) a.insert(a.end(), {"--workers", std::to_string(p.workers)});
   if (resume) a.push_back("--resume");

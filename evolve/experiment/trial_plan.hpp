@@ -1,7 +1,17 @@
 #pragma once
-// The trials of an experiment (issue 7): N seeds of each regime, run one after
-// the other by robozoo-experiment, one log per trial in the experiment's folder.
-// The paper's experiment is 30 trials per regime, population 150, 500 generations.
+// The trials of an experiment: N trials of each arm, run one after the other by
+// robozoo-experiment, one log per trial in the experiment's folder. The paper's
+// experiment is 30 trials per regime, population 150, 500 generations.
+//
+// Arms: "feedforward" (the paper's control), "recurrent" (its experimental
+// regime, fully recurrent from generation 0 by HyperNEAT's start) and
+// "recurrent-sparse" (recurrence allowed, but the control's 99-link start:
+// it tells recurrence apart from the denser start, which the paper cannot).
+//
+// Seeds: no two trials of an experiment share one. Trial k (1-based) of arm
+// number a (0 feedforward, 1 recurrent, 2 recurrent-sparse, whichever arms run)
+// uses seed 3 (k - 1) + a + 1: trial 1 seeds 1, 2, 3; trial 2 seeds 4, 5, 6; ...
+// so the samples of the arms are independent, as Student's unpaired t-test assumes.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -10,8 +20,22 @@
 
 namespace robozoo {
 
+/// One arm of an experiment: a regime and its generation-0 topology.
+enum class Arm : int8_t { FeedForward = 0, Recurrent = 1, RecurrentSparse = 2 };
+constexpr int kNumArms = 3;
+std::string arm_name(Arm a);                   ///< "feedforward", "recurrent", "recurrent-sparse"
+Arm arm_from_name(const std::string& name);    ///< throws std::invalid_argument listing the names
+Regime arm_regime(Arm a);                      ///< the regime the arm evolves in
+/// The arm a run's configuration belongs to: feedforward for the feed-forward
+/// regime; recurrent-sparse for the recurrent regime with the inputs-to-outputs
+/// start; recurrent otherwise.
+Arm arm_of(Regime regime, InitialLinks initial_links);
+/// Seed of trial k (1-based) of arm a: 3 (k - 1) + a + 1.
+int64_t trial_seed(Arm a, int trial);
+
 struct ExperimentParams {
-  int trials = 30;          ///< seeds per regime, 1..trials (count)
+  int trials = 30;          ///< trials per arm, 1..trials (count)
+  std::vector<Arm> arms = {Arm::FeedForward, Arm::Recurrent};  ///< the arms, in the order trials run
   int generations = 500;    ///< generations per trial (count)
   int population = 150;     ///< genomes per generation (count)
   int steps = 0;            ///< physics steps per evaluation (count); 0: robozoo-evolve's default (2,500)
@@ -22,17 +46,19 @@ struct ExperimentParams {
 };
 
 struct Trial {
+  Arm arm = Arm::FeedForward;
   Regime regime = Regime::FeedForward;
-  int64_t seed = 1;
-  std::string log_path;     ///< <out_dir>/<regime>-s<seed>.lcmlog
-  std::string output_path;  ///< <out_dir>/<regime>-s<seed>.out: robozoo-evolve's messages, appended
-  std::string name() const; ///< "<regime>-s<seed>"
+  int number = 1;           ///< trial number within its arm, 1-based
+  int64_t seed = 1;         ///< trial_seed(arm, number)
+  std::string log_path;     ///< <out_dir>/<arm>-s<seed>.lcmlog
+  std::string output_path;  ///< <out_dir>/<arm>-s<seed>.out: robozoo-evolve's messages, appended
+  std::string name() const; ///< "<arm>-s<seed>", also the run id
 };
 
 /// Throws std::invalid_argument naming the parameter when one is out of range.
 void validate_experiment(const ExperimentParams& p);
 
-/// The trials in the order they run: seed 1 of both regimes, then seed 2, ...,
+/// The trials in the order they run: trial 1 of every arm, then trial 2, ...,
 /// so that an experiment stopped half way has about as many trials of each.
 std::vector<Trial> plan_trials(const ExperimentParams& p);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The fitness's d-term rules (paper 2.4, DESIGN.md section 2): what an episode
+// The fitness's d-term rules (paper 2.4, docs/method.md section 2): what an episode
 // records while it runs, the per-step tests (acceleration fault, rest), and the
 // end-of-episode decision.
 //

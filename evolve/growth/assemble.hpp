@@ -1,6 +1,6 @@
 #pragma once
 // From a pruned GrownBody to a Robot model: bodies, joints, motor neurons and
-// sensors numbered as DESIGN.md section 2 and robot.hpp fix them.
+// sensors numbered as docs/method.md section 2 and robot.hpp fix them.
 #include "evolve/growth/grown_body.hpp"
 #include "evolve/growth/robot.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The point cloud cast around a sphere (paper 2.3; DESIGN.md section 2 step 2):
+// The point cloud cast around a sphere (paper 2.3; docs/method.md section 2 step 2):
 // cloud_points points on the horizontal circle of radius r_parent around the
 // sphere's centre, point k at angle k * cloud_step (rad) from +x towards +y.
 #include <vector>

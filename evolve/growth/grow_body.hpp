@@ -1,5 +1,5 @@
 #pragma once
-// Growth steps 1-4 (paper 2.3; DESIGN.md section 2): the root, then clouds cast
+// Growth steps 1-4 (paper 2.3; docs/method.md section 2): the root, then clouds cast
 // around spheres taken from a max-priority queue, spheres placed by rules
 // (a)-(d), each with its joint, motor neuron and sensors.
 #include "evolve/growth/cppn_probe.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The raw result of growth steps 1-4 (DESIGN.md section 2), before pruning:
+// The raw result of growth steps 1-4 (docs/method.md section 2), before pruning:
 // every sphere in growth order with its joint and sensors as grown.
 #include <vector>
 

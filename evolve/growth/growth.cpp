@@ -1,4 +1,4 @@
-// grow(): growth steps 1-7 of DESIGN.md section 2, one stage per file.
+// grow(): growth steps 1-7 of docs/method.md section 2, one stage per file.
 #include "evolve/growth/growth.hpp"
 
 #include "evolve/growth/assemble.hpp"

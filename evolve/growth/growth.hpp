@@ -1,5 +1,5 @@
 #pragma once
-// Growth (paper 2.3; DESIGN.md section 2 steps 1-7): a pure function from a
+// Growth (paper 2.3; docs/method.md section 2 steps 1-7): a pure function from a
 // decoded CPPN and parameters to a robot model.
 #include "evolve/cppn/network.hpp"
 #include "evolve/growth/params.hpp"
@@ -7,7 +7,7 @@
 
 namespace robozoo {
 
-/// CPPN output indices (node id minus 9), DESIGN.md section 2.
+/// CPPN output indices (node id minus 9), docs/method.md section 2.
 enum CppnOutput : int {
   kOutMatter = 0, kOutRadius = 1, kOutJoint = 2, kOutTheta = 3, kOutTau = 4, kOutOmega = 5,
   kOutSensorDistance = 6, kOutSensorTouch = 7, kOutSensorProprio = 8, kOutSensorTime = 9,

@@ -1,6 +1,6 @@
 #pragma once
 // A joint's hinge and motor neuron from the CPPN outputs at the child's point
-// (paper 2.3; DESIGN.md section 2, outputs table).
+// (paper 2.3; docs/method.md section 2, outputs table).
 #include <Eigen/Core>
 
 #include "evolve/growth/params.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of growing a robot from a CPPN (paper 2.3, DESIGN.md section 2).
+// Parameters of growing a robot from a CPPN (paper 2.3, docs/method.md section 2).
 // Lengths in ODE length units (m), angles in rad.
 #include <cmath>
 

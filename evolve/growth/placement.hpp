@@ -1,5 +1,5 @@
 #pragma once
-// Placement rules (b), (c), (d) of paper 2.3 (DESIGN.md section 2 step 3), over
+// Placement rules (b), (c), (d) of paper 2.3 (docs/method.md section 2 step 3), over
 // the spheres placed so far and their rigid components.
 //
 // Rigid components during growth: the root starts component 0. A fused sphere

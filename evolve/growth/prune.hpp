@@ -1,5 +1,5 @@
 #pragma once
-// Growth step 5 (paper 2.3; DESIGN.md section 2): pruning leaf joints.
+// Growth step 5 (paper 2.3; docs/method.md section 2): pruning leaf joints.
 #include "evolve/growth/grown_body.hpp"
 
 namespace robozoo {

@@ -1,5 +1,5 @@
 #pragma once
-// A grown robot: a constant model (DESIGN.md section 6: model apart from state).
+// A grown robot: a constant model (docs/method.md section 6: model apart from state).
 // Positions are in the growth frame after the vertical shift unless noted.
 #include <cstdint>
 #include <vector>

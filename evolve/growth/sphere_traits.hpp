@@ -1,6 +1,6 @@
 #pragma once
 // A new sphere's radius, density and sensors from the CPPN outputs at its
-// point (paper 2.3; DESIGN.md section 2, outputs table).
+// point (paper 2.3; docs/method.md section 2, outputs table).
 #include <cstdint>
 
 #include "evolve/growth/cppn_probe.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Growth step 7 (paper 3; DESIGN.md section 2): rest the robot on the ground.
+// Growth step 7 (paper 3; docs/method.md section 2): rest the robot on the ground.
 #include "evolve/growth/robot.hpp"
 
 namespace robozoo {

@@ -1,5 +1,5 @@
 #pragma once
-// Growth step 6 (paper 2.3; DESIGN.md section 2): the CTRNN weights.
+// Growth step 6 (paper 2.3; docs/method.md section 2): the CTRNN weights.
 #include "evolve/growth/cppn_probe.hpp"
 #include "evolve/growth/params.hpp"
 #include "evolve/growth/robot.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Writing and reading LCM event logs (the format of lcm-logger, lcm-logplayer
-// and lcm::LogFile). The log is the record of a run (DESIGN.md section 1).
+// and lcm::LogFile). The log is the record of a run (docs/method.md section 1).
 #include <cstdint>
 #include <string>
 #include <vector>

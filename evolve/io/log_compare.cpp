@@ -29,7 +29,7 @@ bool normalize_message(const std::string& channel, const std::vector<uint8_t>& d
       m.eval_seconds = 0;
       m.generation_seconds = 0;
     });
-  if (channel == kChannelGenome) return renormalize<genome_t>(data, out, [](genome_t& m) { m.utime = 0; });
+  if (channel == kChannelGenome) return renormalize<cppn_genome_t>(data, out, [](cppn_genome_t& m) { m.utime = 0; });
   if (channel == kChannelMorphology)
     return renormalize<morphology_t>(data, out, [](morphology_t& m) { m.utime = 0; });
   if (channel == kChannelPose) return renormalize<pose_t>(data, out, [](pose_t& m) { m.utime = 0; });

@@ -1,10 +1,12 @@
 #include "evolve/messages/build.hpp"
 
+#include "evolve/core/version.hpp"
+
 #include <stdexcept>
 
 namespace robozoo {
 
-std::string software_version() { return ROBOZOO_VERSION; }
+std::string software_version() { return software_version_string(); }
 
 run_t make_run_message(const std::string& run_id, const RunConfig& config, int64_t utime) {
   run_t m{};
@@ -45,9 +47,9 @@ generation_t make_generation_message(const std::string& run_id, const Generation
   return m;
 }
 
-genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g,
+cppn_genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g,
                              int32_t species_id, const GenomeScore& score, int64_t utime) {
-  genome_t m{};
+  cppn_genome_t m{};
   m.utime = utime;
   m.run_id = run_id;
   m.generation = generation;
@@ -60,10 +62,11 @@ genome_t make_genome_message(const std::string& run_id, int32_t generation, cons
   m.num_nodes = static_cast<int32_t>(g.nodes.size());
   m.nodes.reserve(g.nodes.size());
   for (const auto& n : g.nodes) {
-    node_t x{};
+    cppn_node_t x{};
     x.id = n.id;
     x.kind = static_cast<int8_t>(n.kind);
     x.activation = static_cast<int8_t>(n.activation);
+    x.position = n.position;
     m.nodes.push_back(x);
   }
   m.num_links = static_cast<int32_t>(g.links.size());
@@ -152,7 +155,7 @@ pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t 
   return m;
 }
 
-Genome genome_from_message(const genome_t& m, const GenomeLayout& layout) {
+Genome genome_from_message(const cppn_genome_t& m, const GenomeLayout& layout) {
   if (m.num_nodes < 0 || static_cast<size_t>(m.num_nodes) != m.nodes.size() || m.num_links < 0 ||
       static_cast<size_t>(m.num_links) != m.links.size())
     throw std::invalid_argument("genome message " + std::to_string(m.genome_id) +
@@ -166,7 +169,7 @@ Genome genome_from_message(const genome_t& m, const GenomeLayout& layout) {
     if (!valid_activation(n.activation))
       throw std::invalid_argument("genome " + std::to_string(m.genome_id) + ": node " + std::to_string(n.id) +
                                   " has unknown activation " + std::to_string(n.activation));
-    g.nodes.push_back({n.id, static_cast<NodeKind>(n.kind), static_cast<Activation>(n.activation)});
+    g.nodes.push_back({n.id, static_cast<NodeKind>(n.kind), static_cast<Activation>(n.activation), n.position});
   }
   for (const auto& l : m.links)
     g.links.push_back({l.innovation, l.from_node, l.to_node, l.weight, l.enabled != 0, 0});

@@ -1,6 +1,6 @@
 #pragma once
 // Building robozoo's LCM messages: pure functions of the science's data
-// (DESIGN.md section 3 and 6). Sending them is another module's job.
+// (docs/method.md section 3 and 6). Sending them is another module's job.
 #include <cstdint>
 #include <string>
 
@@ -10,14 +10,14 @@
 #include "evolve/growth/robot.hpp"
 #include "evolve/sim/simulation.hpp"
 #include "robozoo/generation_t.hpp"
-#include "robozoo/genome_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
 #include "robozoo/run_t.hpp"
 
 namespace robozoo {
 
-/// Channel names (DESIGN.md section 3).
+/// Channel names (docs/method.md section 3).
 inline constexpr const char* kChannelRun = "ROBOZOO_RUN";
 inline constexpr const char* kChannelGeneration = "ROBOZOO_GENERATION";
 inline constexpr const char* kChannelGenome = "ROBOZOO_GENOME";
@@ -47,7 +47,7 @@ struct GenomeScore {
   double fitness = 0, r = 0, d = 0;
   Outcome outcome = Outcome::NotSimulated;
 };
-genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g,
+cppn_genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g,
                              int32_t species_id, const GenomeScore& score, int64_t utime);
 morphology_t make_morphology_message(const std::string& run_id, int32_t generation, int64_t genome_id,
                                      const Robot& robot, int64_t utime);
@@ -56,7 +56,7 @@ pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t 
 
 /// Inverse of make_genome_message: checks counts and the genome against the
 /// layout; throws std::invalid_argument naming the problem.
-Genome genome_from_message(const genome_t& m, const GenomeLayout& layout);
+Genome genome_from_message(const cppn_genome_t& m, const GenomeLayout& layout);
 
 /// Encodes any generated LCM type to bytes.
 template <class T>

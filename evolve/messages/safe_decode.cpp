@@ -7,7 +7,7 @@ namespace robozoo {
 namespace {
 
 // Sizes on the wire (LCM: big-endian, nested structs without their hash).
-constexpr int64_t kNodeBytes = 4 + 1 + 1;                                  // node_t
+constexpr int64_t kNodeBytes = 4 + 1 + 1 + 8;                              // cppn_node_t
 constexpr int64_t kLinkBytes = 8 + 4 + 4 + 8 + 1;                          // link_t
 constexpr int64_t kSphereBytes = 4 + 4 + 24 + 8 + 8 + 4 + 1 + 24 + 8 + 4 + 1;  // sphere_t
 
@@ -99,10 +99,20 @@ int64_t wire_size(const generation_t*, const uint8_t* data, size_t len, std::str
   return -1;
 }
 
-int64_t wire_size(const genome_t*, const uint8_t* data, size_t len, std::string* why) {
+int64_t wire_size(const cppn_genome_t*, const uint8_t* data, size_t len, std::string* why) {
+  if (len >= 8) {
+    uint64_t h = 0;
+    for (int i = 0; i < 8; ++i) h = (h << 8) | data[i];
+    if (static_cast<int64_t>(h) == fingerprint<genome_t>()) {
+      if (why)
+        *why = "a genome_t of an older robozoo (its nodes have no drawing positions, written before the "
+               "HyperNEAT topology rules); this robozoo reads cppn_genome_t: run the evolution again";
+      return -1;
+    }
+  }
   Walker w(data, len, why);
   int32_t nodes = 0, links = 0;
-  if (w.hash(fingerprint<genome_t>()) && w.skip(8, "utime") && w.str("run_id") &&
+  if (w.hash(fingerprint<cppn_genome_t>()) && w.skip(8, "utime") && w.str("run_id") &&
       w.skip(4 + 8 + 4 + 3 * 8 + 1, "genome fields") && w.count(nodes, "num_nodes") &&
       w.array(nodes, kNodeBytes, "nodes") && w.count(links, "num_links") && w.array(links, kLinkBytes, "links"))
     return w.end();

@@ -13,6 +13,7 @@
 
 #include "robozoo/eval_result_t.hpp"
 #include "robozoo/generation_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
@@ -25,7 +26,7 @@ namespace robozoo {
 /// truncated, trailing bytes).
 int64_t wire_size(const run_t*, const uint8_t* data, size_t len, std::string* why);
 int64_t wire_size(const generation_t*, const uint8_t* data, size_t len, std::string* why);
-int64_t wire_size(const genome_t*, const uint8_t* data, size_t len, std::string* why);
+int64_t wire_size(const cppn_genome_t*, const uint8_t* data, size_t len, std::string* why);
 int64_t wire_size(const morphology_t*, const uint8_t* data, size_t len, std::string* why);
 int64_t wire_size(const pose_t*, const uint8_t* data, size_t len, std::string* why);
 int64_t wire_size(const eval_result_t*, const uint8_t* data, size_t len, std::string* why);

@@ -25,8 +25,13 @@ double compatibility_distance(const Genome& a, const Genome& b, const NeatParams
       ++j;
     }
   }
-  // What is left of one genome lies beyond the other's last innovation.
-  excess = static_cast<int>((la.size() - i) + (lb.size() - j));
+  if (p.compatibility == CompatibilityRule::HyperNeat) {
+    // HyperNEAT counts the difference in gene counts as excess, whatever the innovations.
+    excess = static_cast<int>(la.size() > lb.size() ? la.size() - lb.size() : lb.size() - la.size());
+  } else {
+    // What is left of one genome lies beyond the other's last innovation.
+    excess = static_cast<int>((la.size() - i) + (lb.size() - j));
+  }
   const double n = 1.0;  // N = 1 (HyperNEAT): no normalisation by genome size
   const double wbar = matching > 0 ? weight_diff / matching : 0.0;
   return p.disjoint_coefficient * disjoint / n + p.excess_coefficient * excess / n +

@@ -5,15 +5,23 @@
 
 namespace robozoo {
 
-int64_t initial_link_innovation(const GenomeLayout& layout, int input, int output) {
-  return static_cast<int64_t>(input) * layout.num_outputs + output;
+int64_t initial_link_innovation(const GenomeLayout& layout, int from, int output) {
+  return static_cast<int64_t>(from) * layout.num_outputs + output;
 }
 
 int64_t first_free_innovation(const GenomeLayout& layout) {
-  return static_cast<int64_t>(layout.num_inputs) * layout.num_outputs;
+  return static_cast<int64_t>(layout.num_inputs + layout.num_outputs) * layout.num_outputs;
 }
 
-Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& p, Rng& rng) {
+bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime regime,
+                               const NeatParams& p) {
+  if (to.kind == NodeKind::Input || to.kind == NodeKind::Bias) return false;
+  if (from.id == to.id) return regime == Regime::Recurrent && p.self_loops;
+  if (regime == Regime::Recurrent) return true;
+  return from.position < to.position;
+}
+
+Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& p, Regime regime, Rng& rng) {
   if (layout.num_inputs < 1 || layout.num_outputs < 1)
     throw std::invalid_argument("genome layout needs at least one input and one output, got " +
                                 std::to_string(layout.num_inputs) + " and " +
@@ -24,17 +32,22 @@ Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& 
   Genome g;
   g.id = id;
   for (int i = 0; i < layout.num_inputs; ++i)
-    g.nodes.push_back({i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input,
-                       Activation::Linear});
+    g.nodes.push_back({i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear,
+                       kInputPosition});
   for (int o = 0; o < layout.num_outputs; ++o)
-    g.nodes.push_back({layout.num_inputs + o, NodeKind::Output, layout.output_activation});
+    g.nodes.push_back({layout.num_inputs + o, NodeKind::Output, layout.output_activation, kOutputPosition});
   const double r = p.initial_weight_range;
-  for (int i = 0; i < layout.num_inputs; ++i)
+  const int sources =
+      p.initial_links == InitialLinks::AllAllowed ? layout.num_inputs + layout.num_outputs : layout.num_inputs;
+  for (int from = 0; from < sources; ++from)
     for (int o = 0; o < layout.num_outputs; ++o) {
+      const NodeGene& a = g.nodes[static_cast<size_t>(from)];
+      const NodeGene& b = g.nodes[static_cast<size_t>(layout.num_inputs + o)];
+      if (!link_allowed_by_positions(a, b, regime, p)) continue;
       LinkGene l;
-      l.innovation = initial_link_innovation(layout, i, o);
-      l.from = i;
-      l.to = layout.num_inputs + o;
+      l.innovation = initial_link_innovation(layout, from, o);
+      l.from = a.id;
+      l.to = b.id;
       l.weight = rng.uniform(-r, r);
       l.enabled = true;
       l.born = 0;

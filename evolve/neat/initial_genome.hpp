@@ -1,5 +1,5 @@
 #pragma once
-// Generation-0 genomes (HyperNEAT's default start, DESIGN.md section 2).
+// Generation-0 genomes (HyperNEAT's default start; docs/method.md, "CPPN-NEAT").
 #include <cstdint>
 
 #include "evolve/core/rng.hpp"
@@ -8,18 +8,32 @@
 
 namespace robozoo {
 
-/// Innovation number of the initial link from input `input` to output index
-/// `output` (0-based among the outputs): input * num_outputs + output. The same
-/// in every genome of every run with this layout.
-int64_t initial_link_innovation(const GenomeLayout& layout, int input, int output);
-/// First innovation number free for mutations: num_inputs * num_outputs.
+/// Innovation number of the initial link from fixed node `from` (an input or an
+/// output: 0 .. num_inputs + num_outputs - 1) to output index `output` (0-based
+/// among the outputs): from * num_outputs + output. The same in every genome of
+/// every run with this layout, whichever regime.
+int64_t initial_link_innovation(const GenomeLayout& layout, int from, int output);
+/// First innovation number free for mutations: (num_inputs + num_outputs) * num_outputs.
 int64_t first_free_innovation(const GenomeLayout& layout);
 
-/// Every input (the bias included) linked to every output, weights uniform in
-/// [-initial_weight_range, initial_weight_range), no hidden node, links born in
-/// generation 0. Input nodes are Linear (they only hold their value), outputs
-/// have layout.output_activation. Throws std::invalid_argument for a layout
-/// without inputs or outputs.
-Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& p, Rng& rng);
+/// Whether the regime allows a link from -> to in g under p's rules, judged by
+/// the nodes' drawing positions and the self-loop setting alone (no test of
+/// existing links; the cycle test of LinkRule::CycleTest is mutate_add_link's).
+/// Never a link into an input.
+bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime regime,
+                               const NeatParams& p);
+
+/// A generation-0 genome: the inputs (Linear, position 0), the outputs
+/// (layout.output_activation, position 1), no hidden node, and its links, born
+/// in generation 0 with weights uniform in [-initial_weight_range,
+/// initial_weight_range), drawn in innovation order:
+/// - p.initial_links == AllAllowed (HyperNEAT's createTopology, edge density 1):
+///   a link from every node to every non-input node the regime allows: in the
+///   feed-forward regime every input to every output (99 links for the robot
+///   layout); in the recurrent regime also every output to every other output
+///   (+110: 209), and to itself when p.self_loops (+11).
+/// - InputsToOutputs: every input to every output only, whichever regime.
+/// Throws std::invalid_argument for a layout without inputs or outputs.
+Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& p, Regime regime, Rng& rng);
 
 }  // namespace robozoo

@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
+
+#include "evolve/neat/initial_genome.hpp"
 
 namespace robozoo {
 namespace {
@@ -79,59 +83,108 @@ std::vector<Activation> allowed_activations(uint32_t mask) {
 
 }  // namespace
 
+bool link_allowed(const Genome& g, const NodeGene& from, const NodeGene& to, Regime regime,
+                  const NeatParams& p) {
+  if (regime == Regime::FeedForward && p.link_rule == LinkRule::CycleTest) {
+    if (to.kind == NodeKind::Input || to.kind == NodeKind::Bias || from.id == to.id) return false;
+    return !reaches(g, to.id, from.id);
+  }
+  return link_allowed_by_positions(from, to, regime, p);
+}
+
 bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
                      InnovationTracker& innov, int32_t generation, Rng& rng) {
-  // Candidate targets: every node that is not an input.
-  std::vector<int32_t> targets;
-  for (const auto& n : g.nodes)
-    if (n.id >= layout.num_inputs && n.kind != NodeKind::Input && n.kind != NodeKind::Bias)
-      targets.push_back(n.id);
-  if (targets.empty() || g.nodes.empty()) return false;
-  for (int t = 0; t < p.add_link_tries; ++t) {
-    const int32_t from = g.nodes[rng.index(g.nodes.size())].id;
-    const int32_t to = targets[rng.index(targets.size())];
-    if (has_link(g, from, to)) continue;
-    if (regime == Regime::FeedForward && (from == to || reaches(g, to, from))) continue;
-    LinkGene l;
-    l.innovation = innov.link(from, to);
-    l.from = from;
-    l.to = to;
-    l.weight = rng.uniform(-p.initial_weight_range, p.initial_weight_range);
-    l.enabled = true;
-    l.born = generation;
-    if (has_innovation(g, l.innovation))
-      throw std::logic_error("mutate_add_link: innovation " + std::to_string(l.innovation) +
-                             " already in genome " + std::to_string(g.id));
-    insert_link(g, l);
-    return true;
+  if (g.nodes.empty()) return false;
+  int32_t from = -1, to = -1;
+  if (p.add_link == AddLinkRule::Uniform) {
+    // Every allowed pair not linked yet, in (from, to) node order; one uniform draw.
+    std::vector<std::pair<int32_t, int32_t>> free;
+    for (const auto& a : g.nodes)
+      for (const auto& b : g.nodes) {
+        if (b.id < layout.num_inputs) continue;
+        if (has_link(g, a.id, b.id) || !link_allowed(g, a, b, regime, p)) continue;
+        free.emplace_back(a.id, b.id);
+      }
+    if (free.empty()) return false;
+    std::tie(from, to) = free[rng.index(free.size())];
+  } else {
+    // Candidate targets: every node that is not an input.
+    std::vector<size_t> targets;
+    for (size_t i = 0; i < g.nodes.size(); ++i)
+      if (g.nodes[i].id >= layout.num_inputs && g.nodes[i].kind != NodeKind::Input &&
+          g.nodes[i].kind != NodeKind::Bias)
+        targets.push_back(i);
+    if (targets.empty()) return false;
+    for (int t = 0; t < p.add_link_tries && from < 0; ++t) {
+      const NodeGene& a = g.nodes[rng.index(g.nodes.size())];
+      const NodeGene& b = g.nodes[targets[rng.index(targets.size())]];
+      if (has_link(g, a.id, b.id) || !link_allowed(g, a, b, regime, p)) continue;
+      from = a.id;
+      to = b.id;
+    }
+    if (from < 0) return false;
   }
-  return false;
+  LinkGene l;
+  l.innovation = innov.link(from, to);
+  l.from = from;
+  l.to = to;
+  l.weight = rng.uniform(-p.initial_weight_range, p.initial_weight_range);
+  l.enabled = true;
+  l.born = generation;
+  if (has_innovation(g, l.innovation))
+    throw std::logic_error("mutate_add_link: innovation " + std::to_string(l.innovation) +
+                           " already in genome " + std::to_string(g.id));
+  insert_link(g, l);
+  return true;
 }
 
 bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
                      int32_t generation, Rng& rng) {
   const std::vector<Activation> acts = allowed_activations(p.hidden_activations);
-  std::vector<size_t> enabled;
-  for (size_t i = 0; i < g.links.size(); ++i)
-    if (g.links[i].enabled) enabled.push_back(i);
-  if (enabled.empty()) return false;
-  const size_t k = enabled[rng.index(enabled.size())];
+  // Splittable links: enabled ones; with HyperNEAT's rule, forward ones only.
+  std::vector<size_t> splittable;
+  for (size_t i = 0; i < g.links.size(); ++i) {
+    const LinkGene& l = g.links[i];
+    if (!l.enabled || l.from == l.to) continue;
+    if (p.add_node == AddNodeRule::HyperNeat && !is_forward_link(g, l)) continue;
+    splittable.push_back(i);
+  }
+  if (splittable.empty()) return false;
+  const size_t k = splittable[rng.index(splittable.size())];
   const Activation drawn = acts[rng.index(acts.size())];
   const LinkGene old = g.links[k];
   const InnovationTracker::Split s = innov.split(old.innovation, old.from, old.to, drawn);
-  // The same split twice in one genome (possible only if a re-enabled link is
-  // split again within the generation that split it): leave the genome alone.
+  // The same split twice in one genome (possible only if a link is split again
+  // within the generation that split it): leave the genome alone.
   if (node_index(g, s.node) >= 0 || has_innovation(g, s.in_link) || has_innovation(g, s.out_link))
     return false;
-  g.links[k].enabled = false;
-  insert_node(g, {s.node, NodeKind::Hidden, s.activation});
+  const double position = (node_position(g, old.from) + node_position(g, old.to)) / 2.0;
+  double out_weight = old.weight;
+  if (p.add_node == AddNodeRule::HyperNeat) {
+    // HyperNEAT keeps the split link, halves its weight and makes it young
+    // again; the new path carries half of what is left: w/2 * 1/2 = w/4.
+    g.links[k].weight = old.weight / 2.0;
+    g.links[k].born = generation;
+    out_weight = g.links[k].weight / 2.0;
+  } else {
+    g.links[k].enabled = false;
+  }
+  insert_node(g, {s.node, NodeKind::Hidden, s.activation, position});
   insert_link(g, {s.in_link, old.from, s.node, 1.0, true, generation});
-  insert_link(g, {s.out_link, s.node, old.to, old.weight, true, generation});
+  insert_link(g, {s.out_link, s.node, old.to, out_weight, true, generation});
   return true;
 }
 
 void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng) {
   for (auto& l : g.links) {
+    if (p.weight_mutation == WeightMutationRule::Classic) {
+      if (rng.bernoulli(p.weight_replace_probability))
+        l.weight = rng.uniform(-p.initial_weight_range, p.initial_weight_range);
+      else
+        l.weight += rng.uniform(-p.weight_perturbation, p.weight_perturbation);
+      l.weight = std::clamp(l.weight, -p.weight_limit, p.weight_limit);
+      continue;
+    }
     const bool young = generation - l.born < p.young_link_age;
     if (young || rng.bernoulli(p.old_link_perturb_probability)) {
       l.weight += rng.uniform(-p.weight_perturbation, p.weight_perturbation);

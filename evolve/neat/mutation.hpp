@@ -9,31 +9,46 @@
 
 namespace robozoo {
 
+/// Whether the regime allows a new link from -> to in g: never into an input;
+/// a self-loop only in the recurrent regime with p.self_loops; otherwise any
+/// link in the recurrent regime; in the feed-forward regime a forward link
+/// (pos(from) < pos(to)) with LinkRule::Positions, or a link that closes no
+/// directed cycle over all link genes, disabled ones included, with
+/// LinkRule::CycleTest (so no later re-enabling can close one either).
+/// Existing genes are not looked at otherwise.
+bool link_allowed(const Genome& g, const NodeGene& from, const NodeGene& to, Regime regime,
+                  const NeatParams& p);
+
 /// Adds one new link gene with weight uniform in [-initial_weight_range,
-/// initial_weight_range), born in `generation`. Up to p.add_link_tries random
-/// (from, to) pairs are tried (from any node, to any non-input node); the first
-/// legal one is taken. Legal: no gene from -> to exists yet (enabled or not),
-/// and in the feed-forward regime from != to and the graph of all link genes,
-/// disabled ones included, stays acyclic (so that no later re-enabling by
-/// crossover can close a cycle either). Recurrent regime: self-loops and
-/// cycles allowed. Returns false when no try found a legal link.
+/// initial_weight_range), born in `generation`, between two nodes that have no
+/// gene from -> to yet (enabled or not) and that link_allowed allows.
+/// AddLinkRule::Uniform (HyperNEAT): one uniform draw among all such pairs,
+/// listed in (from, to) node order; fails only when there is none.
+/// AddLinkRule::Tries: up to p.add_link_tries random (from any node, to any
+/// non-input node) pairs, the first allowed one. Returns false when no link was added.
 bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
                      InnovationTracker& innov, int32_t generation, Rng& rng);
 
-/// Splits an enabled link a -> b chosen uniformly: the link is disabled, a new
-/// hidden node h gets an activation drawn uniformly from p.hidden_activations
-/// (the first such split of the generation fixes it, see InnovationTracker),
-/// a -> h has weight 1 and b's old weight goes to h -> b; both born in
-/// `generation`. Returns false if g has no enabled link, or if g already has
-/// the node this split would create. Throws std::invalid_argument if
-/// p.hidden_activations names no valid activation.
+/// Splits a link a -> b chosen uniformly among the enabled links other than
+/// self-loops; with AddNodeRule::HyperNeat among the enabled *forward* links
+/// only. A new hidden node h, at the mean of a's and b's drawing positions,
+/// gets an activation drawn uniformly from p.hidden_activations (the first such
+/// split of the generation fixes it, see InnovationTracker); a -> h gets weight
+/// 1. HyperNeat: the old link stays enabled with its weight halved (w/2) and
+/// is born again in `generation`, h -> b gets w/4. Classic: the old link is
+/// disabled, h -> b gets w. New links are born in `generation`. Returns false
+/// if no link can be split, or if g already has the node this split would
+/// create. Throws std::invalid_argument if p.hidden_activations names no valid activation.
 bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
                      int32_t generation, Rng& rng);
 
-/// Every link gene (enabled or not) younger than p.young_link_age generations
-/// (generation - born < young_link_age) is perturbed; an older one with
-/// probability p.old_link_perturb_probability. Perturbation: add uniform
-/// [-weight_perturbation, weight_perturbation), clamp to [-weight_limit, weight_limit].
+/// WeightMutationRule::HyperNeat: every link gene (enabled or not) younger than
+/// p.young_link_age generations (generation - born < young_link_age) is
+/// perturbed; an older one with probability p.old_link_perturb_probability.
+/// Classic (the NEAT paper): every link gene, replaced by a new value uniform in
+/// [-initial_weight_range, initial_weight_range) with probability
+/// p.weight_replace_probability, else perturbed. Perturbation: add uniform
+/// [-weight_perturbation, weight_perturbation); then clamp to [-weight_limit, weight_limit].
 void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng);
 
 /// The mutation an offspring gets (the NEAT paper's order, one structural

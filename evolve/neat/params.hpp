@@ -1,12 +1,61 @@
 #pragma once
 // CPPN-NEAT parameters. Defaults are those of the C++ HyperNEAT package the
-// paper names, as its authors' own parameter files set them (DESIGN.md section 2).
+// paper names, as its authors' own parameter files set them (docs/method.md,
+// "CPPN-NEAT"). The topology rules (which links may exist, the initial genome,
+// add-link, add-node, compatibility) follow HyperNEAT's NEAT_GeneticIndividual
+// by default; the classic NEAT variants stay reachable as options.
 #include <cstdint>
+#include <string>
 
 namespace robozoo {
 
-/// Control regime: add-link never closes a cycle. Experimental: any link, self-loops included.
+/// Control regime: forward links only. Experimental: recurrent links allowed too.
 enum class Regime : int8_t { FeedForward = 0, Recurrent = 1 };
+
+/// Which links the feed-forward regime allows.
+enum class LinkRule : int8_t {
+  Positions = 0,  ///< HyperNEAT: a link is forward when pos(from) < pos(to); only those
+  CycleTest = 1,  ///< classic NEAT: any link that closes no directed cycle
+};
+/// The links of a generation-0 genome.
+enum class InitialLinks : int8_t {
+  AllAllowed = 0,       ///< HyperNEAT's createTopology: every node to every non-input node the regime allows
+  InputsToOutputs = 1,  ///< classic NEAT: every input to every output only
+};
+/// How add-link picks its new link.
+enum class AddLinkRule : int8_t {
+  Uniform = 0,  ///< uniformly among all allowed, not yet linked pairs; fails only when none is left
+  Tries = 1,    ///< up to add_link_tries random (from, to) pairs, the first allowed one
+};
+/// How add-node splits a link.
+enum class AddNodeRule : int8_t {
+  HyperNeat = 0,  ///< forward links only; the old link stays enabled at w/2, in-link 1, out-link w/4
+  Classic = 1,    ///< any enabled link; the old link is disabled, in-link 1, out-link w
+};
+/// Which link weights a weight mutation changes.
+enum class WeightMutationRule : int8_t {
+  HyperNeat = 0,  ///< links younger than young_link_age always perturbed, older ones with old_link_perturb_probability
+  Classic = 1,    ///< the NEAT paper: every link; replaced by a new random value with weight_replace_probability, else perturbed
+};
+/// How the compatibility distance counts unmatched genes.
+enum class CompatibilityRule : int8_t {
+  HyperNeat = 0,  ///< excess = |#links(a) - #links(b)|; disjoint = unmatched genes up to the shorter list's end
+  Classic = 1,    ///< excess = genes beyond the other genome's last innovation; disjoint = the others
+};
+
+std::string link_rule_name(LinkRule r);                  ///< "positions" / "cycle_test"
+std::string initial_links_name(InitialLinks r);          ///< "all_allowed" / "inputs_to_outputs"
+std::string add_link_rule_name(AddLinkRule r);           ///< "uniform" / "tries"
+std::string add_node_rule_name(AddNodeRule r);           ///< "hyperneat" / "classic"
+std::string compatibility_rule_name(CompatibilityRule r);///< "hyperneat" / "classic"
+std::string weight_mutation_rule_name(WeightMutationRule r);  ///< "hyperneat" / "classic"
+/// Inverses of the *_name functions; throw std::invalid_argument listing the names.
+LinkRule link_rule_from_name(const std::string& s);
+InitialLinks initial_links_from_name(const std::string& s);
+AddLinkRule add_link_rule_from_name(const std::string& s);
+AddNodeRule add_node_rule_from_name(const std::string& s);
+CompatibilityRule compatibility_rule_from_name(const std::string& s);
+WeightMutationRule weight_mutation_rule_from_name(const std::string& s);
 
 struct NeatParams {
   int population = 150;                  ///< genomes per generation (count)
@@ -32,7 +81,20 @@ struct NeatParams {
   double mutate_only_probability = 0.25; ///< offspring made by mutation alone (no crossover)
   double interspecies_mating_probability = 0.001;  ///< crossover partner from another species
   int species_elitism_min_offspring = 5; ///< a species with at least this many offspring keeps its champion
-  int add_link_tries = 20;               ///< attempts to find a new, legal link (count)
+  int add_link_tries = 20;               ///< attempts to find a new, legal link with add_link "tries" (count)
+  LinkRule link_rule = LinkRule::Positions;          ///< which links the feed-forward regime allows
+  bool self_loops = false;               ///< recurrent regime: links from a node to itself allowed
+  InitialLinks initial_links = InitialLinks::AllAllowed;  ///< generation-0 topology
+  AddLinkRule add_link = AddLinkRule::Uniform;       ///< how add-link chooses
+  AddNodeRule add_node = AddNodeRule::HyperNeat;     ///< how add-node splits
+  CompatibilityRule compatibility = CompatibilityRule::HyperNeat;  ///< how unmatched genes count
+  WeightMutationRule weight_mutation = WeightMutationRule::HyperNeat;  ///< which weights a weight mutation changes
+  /// Classic weight mutation: a link's weight is replaced by a new value uniform in
+  /// [-initial_weight_range, initial_weight_range) with this probability, else perturbed.
+  double weight_replace_probability = 0.1;
+  /// Crossover: a gene disabled in either parent is inherited disabled with this
+  /// probability, else enabled (classic NEAT 0.75). 0: the chosen gene is copied as it is (HyperNEAT).
+  double disabled_gene_probability = 0.0;
   /// Activation functions a new hidden node may get, as a bit mask over Activation
   /// codes: default signed sigmoid, signed cosine and Gaussian (bits 0, 1, 2).
   uint32_t hidden_activations = 0b111;

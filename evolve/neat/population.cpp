@@ -49,11 +49,31 @@ void validate_neat_params(const NeatParams& p) {
   if (p.species_elitism_min_offspring < 1)
     bad("species_elitism_min_offspring", "must be >= 1, got " + std::to_string(p.species_elitism_min_offspring));
   if (p.add_link_tries < 0) bad("add_link_tries", "must be >= 0, got " + std::to_string(p.add_link_tries));
+  probability("disabled_gene_probability", p.disabled_gene_probability);
+  probability("weight_replace_probability", p.weight_replace_probability);
   const uint32_t valid_bits = (1u << kNumActivations) - 1u;
   if (p.hidden_activations == 0 || (p.hidden_activations & ~valid_bits) != 0)
     bad("hidden_activations", "must be a non-empty mask of activation codes 0.." +
                                   std::to_string(kNumActivations - 1) + ", got " +
                                   std::to_string(p.hidden_activations));
+}
+
+void validate_regime_links(const Genome& g, Regime regime, const NeatParams& p) {
+  for (const auto& l : g.links) {
+    if (l.from == l.to && !(regime == Regime::Recurrent && p.self_loops))
+      throw std::invalid_argument("genome " + std::to_string(g.id) + " has a self-loop on node " +
+                                  std::to_string(l.from) + ", which this regime does not allow");
+    if (regime == Regime::FeedForward && p.link_rule == LinkRule::Positions && !is_forward_link(g, l))
+      throw std::invalid_argument("genome " + std::to_string(g.id) + " has the link " + std::to_string(l.from) +
+                                  " -> " + std::to_string(l.to) + " (innovation " + std::to_string(l.innovation) +
+                                  "), which is not forward, in the feed-forward regime");
+  }
+  if (regime == Regime::FeedForward && p.link_rule == LinkRule::CycleTest) {
+    Genome all = g;
+    for (auto& l : all.links) l.enabled = true;
+    if (has_cycle(all))
+      throw std::invalid_argument("genome " + std::to_string(g.id) + " has a cycle in the feed-forward regime");
+  }
 }
 
 Population::Population(const NeatParams& params, Regime regime, const GenomeLayout& layout, Rng& rng)
@@ -65,7 +85,7 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
   s_.next_node_id = layout_.first_hidden();
   s_.genomes.reserve(static_cast<size_t>(params_.population));
   for (int i = 0; i < params_.population; ++i)
-    s_.genomes.push_back(initial_genome(layout_, s_.next_genome_id++, params_, rng));
+    s_.genomes.push_back(initial_genome(layout_, s_.next_genome_id++, params_, regime_, rng));
   validate_genome(s_.genomes.front(), layout_);
   speciate_current();
 }
@@ -84,12 +104,17 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
     fail("has " + std::to_string(s_.species_of.size()) + " species ids for " + std::to_string(n) + " genomes");
   if (!(s_.compatibility_threshold > 0.0) || !std::isfinite(s_.compatibility_threshold))
     fail("compatibility threshold must be finite and > 0");
+  if (!(s_.speciation_threshold > 0.0) || !std::isfinite(s_.speciation_threshold))
+    fail("speciation threshold must be finite and > 0");
   int64_t max_innovation = -1, max_id = -1;
   int32_t max_node = layout_.first_hidden() - 1;
   for (const auto& g : s_.genomes) {
     validate_genome(g, layout_);
-    if (regime_ == Regime::FeedForward && has_cycle(g))
-      fail("genome " + std::to_string(g.id) + " has a cycle in the feed-forward regime");
+    try {
+      validate_regime_links(g, regime_, params_);
+    } catch (const std::invalid_argument& e) {
+      fail(e.what());
+    }
     max_id = std::max(max_id, g.id);
     if (!g.links.empty()) max_innovation = std::max(max_innovation, g.links.back().innovation);
     max_node = std::max(max_node, g.nodes.back().id);
@@ -115,6 +140,7 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
 }
 
 void Population::speciate_current() {
+  s_.speciation_threshold = s_.compatibility_threshold;
   s_.species_of = speciate(s_.genomes, s_.species, s_.compatibility_threshold, params_,
                            s_.next_species_id, s_.generation);
   s_.compatibility_threshold =
@@ -211,7 +237,7 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
           if (pb >= pa) ++pb;
           b = static_cast<size_t>(sp.members[pb]);
         }
-        child = crossover(s_.genomes[a], fitness[a], s_.genomes[b], fitness[b], rng);
+        child = crossover(s_.genomes[a], fitness[a], s_.genomes[b], fitness[b], params_, rng);
       }
       child.id = s_.next_genome_id++;
       mutate(child, regime_, layout_, params_, tracker, child_gen, rng);

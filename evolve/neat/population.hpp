@@ -3,9 +3,9 @@
 // drop-off age, survival threshold, elitism, crossover and mutation.
 // All randomness comes from the Rng passed in.
 //
-// One generation, as Population::advance runs it (DESIGN.md section 2; where
-// the paper and DESIGN.md are silent the C++ HyperNEAT package and the NEAT
-// paper decide, as noted):
+// One generation, as Population::advance runs it (docs/method.md, "CPPN-NEAT";
+// where the paper is silent the C++ HyperNEAT package and the NEAT paper
+// decide, as noted):
 //  1. Each species' members are ranked by raw fitness (stable: ties keep
 //     population order). The generation champion is the first genome with the
 //     highest fitness.
@@ -55,6 +55,7 @@ struct PopulationState {
   int32_t next_node_id = 0;
   int32_t next_species_id = 0;
   double compatibility_threshold = 6.0;  ///< threshold the next speciation uses (distance units)
+  double speciation_threshold = 6.0;     ///< threshold the current generation was speciated with (distance units)
   std::vector<Genome> genomes;
   std::vector<int32_t> species_of;  ///< species id of each genome (after speciation)
   std::vector<Species> species;
@@ -62,7 +63,8 @@ struct PopulationState {
     return generation == o.generation && next_genome_id == o.next_genome_id &&
            next_innovation == o.next_innovation && next_node_id == o.next_node_id &&
            next_species_id == o.next_species_id &&
-           compatibility_threshold == o.compatibility_threshold && genomes == o.genomes &&
+           compatibility_threshold == o.compatibility_threshold &&
+           speciation_threshold == o.speciation_threshold && genomes == o.genomes &&
            species_of == o.species_of && species == o.species;
   }
 };
@@ -82,6 +84,7 @@ class Population {
  public:
   /// Generation 0: params.population genomes made by initial_genome (ids 0..P-1),
   /// speciated. Throws std::invalid_argument for bad parameters.
+  /// A saved state is checked against the regime's link rules (validate_regime_links).
   Population(const NeatParams& params, Regime regime, const GenomeLayout& layout, Rng& rng);
   /// Continues from a saved state (see state()). Throws std::invalid_argument
   /// if the state does not fit the parameters and layout.
@@ -93,7 +96,10 @@ class Population {
   /// Species id of genome i of the current generation.
   int32_t species_of(size_t i) const { return s_.species_of.at(i); }
   const std::vector<Species>& species() const { return s_.species; }
+  /// The threshold the next generation will be speciated with.
   double compatibility_threshold() const { return s_.compatibility_threshold; }
+  /// The threshold in force for the current generation: the one it was speciated with.
+  double speciation_threshold() const { return s_.speciation_threshold; }
 
   /// Fitnesses of the current generation, in genome order (finite, >= 0;
   /// std::invalid_argument otherwise). Then shares fitness and breeds and
@@ -119,5 +125,11 @@ class Population {
 
 /// Throws std::invalid_argument naming the first parameter out of range.
 void validate_neat_params(const NeatParams& p);
+
+/// Throws std::invalid_argument when g holds a link gene (enabled or not) that
+/// the regime never allows: in the feed-forward regime a non-forward link
+/// (LinkRule::Positions) or a cycle (CycleTest); a self-loop unless the
+/// recurrent regime allows self-loops.
+void validate_regime_links(const Genome& g, Regime regime, const NeatParams& p);
 
 }  // namespace robozoo

@@ -75,7 +75,7 @@ json genome_to_json(const Genome& g) {
   json nodes = json::array();
   for (const auto& n : g.nodes)
     nodes.push_back({{"id", n.id}, {"kind", node_kind_name(n.kind)},
-                     {"activation", activation_name(n.activation)}});
+                     {"activation", activation_name(n.activation)}, {"position", n.position}});
   json links = json::array();
   for (const auto& l : g.links)
     links.push_back({{"innovation", l.innovation}, {"from", l.from}, {"to", l.to},
@@ -100,6 +100,16 @@ Genome genome_from_json(const json& j, const std::string& path) {
       if (what.rfind(p, 0) == 0) throw;  // already names its path
       fail(p, what);
     }
+    // Inputs and outputs sit at 0 and 1; a hidden node's position must be given
+    // (genomes written before drawing positions existed have none).
+    if (nodes[i].contains("position"))
+      n.position = as_double(nodes[i]["position"], p + ".position");
+    else if (n.kind == NodeKind::Hidden)
+      fail(p, "hidden node " + std::to_string(n.id) +
+                  " has no \"position\" (drawing position; genomes written before robozoo used "
+                  "HyperNEAT's positions lack it)");
+    else
+      n.position = n.kind == NodeKind::Output ? kOutputPosition : kInputPosition;
     g.nodes.push_back(n);
   }
   const std::string lp = path + ".links";
@@ -151,6 +161,7 @@ json population_state_to_json(const PopulationState& s) {
           {"next_node_id", s.next_node_id},
           {"next_species_id", s.next_species_id},
           {"compatibility_threshold", s.compatibility_threshold},
+          {"speciation_threshold", s.speciation_threshold},
           {"genomes", std::move(genomes)},
           {"species_of", s.species_of},
           {"species", std::move(species)}};
@@ -165,6 +176,7 @@ PopulationState population_state_from_json(const json& j, const std::string& pat
   s.next_species_id = as_i32(field(j, "next_species_id", path), path + ".next_species_id");
   s.compatibility_threshold =
       as_double(field(j, "compatibility_threshold", path), path + ".compatibility_threshold");
+  s.speciation_threshold = as_double(field(j, "speciation_threshold", path), path + ".speciation_threshold");
   const std::string gp = path + ".genomes";
   const json& genomes = as_array(field(j, "genomes", path), gp);
   for (size_t i = 0; i < genomes.size(); ++i) s.genomes.push_back(genome_from_json(genomes[i], at(gp, i)));

@@ -2,8 +2,9 @@
 // XOR, the NEAT paper's benchmark, as a check of the NEAT core.
 //
 // Layout: 3 inputs (x1, x2 in {0, 1}; bias 1.0 at input index 2, kind Bias),
-// 1 output (signed sigmoid, mapped to (out + 1) / 2 in (0, 1), i.e. the
-// logistic function of the output's net input). Fitness (4 - sum |error|)^2 as
+// 1 output: a signed sigmoid mapped to (out + 1) / 2 in (0, 1), i.e. the
+// logistic function of the output's net input (the project's preset), or the
+// NEAT paper's steepened sigmoid 1 / (1 + e^(-4.9 x)), read as it is. Fitness (4 - sum |error|)^2 as
 // in the NEAT paper (0..16). Solved when every pattern's mapped output is on
 // the right side of 0.5 (> 0.5 for 1, < 0.5 for 0). The CPPN is queried as
 // every CPPN of the project is (Network, 10 synchronous updates, values reset
@@ -20,11 +21,12 @@ struct XorResult {
   std::array<double, 4> outputs{};  ///< mapped outputs for (0,0), (0,1), (1,0), (1,1)
 };
 
-/// The XOR layout: inputs x1, x2, bias (index 2); one signed-sigmoid output.
-GenomeLayout xor_layout();
+/// The XOR layout: inputs x1, x2, bias (index 2); one output with `output`
+/// (SignedSigmoid or SteepenedSigmoid).
+GenomeLayout xor_layout(Activation output = Activation::SignedSigmoid);
 
 /// Evaluates g on the four patterns. Throws std::invalid_argument if g does
-/// not fit xor_layout().
-XorResult evaluate_xor(const Genome& g);
+/// not fit `layout`, or if the layout's output is neither sigmoid.
+XorResult evaluate_xor(const Genome& g, const GenomeLayout& layout = xor_layout());
 
 }  // namespace robozoo

@@ -1,7 +1,7 @@
 #pragma once
 // The local transport: each worker is a fork()ed child process of the pool's
 // process, talking to it over one AF_UNIX stream socket pair. Processes, not
-// threads, because ODE's random seed is process-global (DESIGN.md section 4).
+// threads, because ODE's random seed is process-global (docs/method.md section 4).
 //
 // The child runs the work function it inherited in a loop (read a Job frame,
 // reply with a Result/Failure frame) until its socket reaches end-of-file, it gets

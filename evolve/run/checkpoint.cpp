@@ -88,8 +88,13 @@ Checkpoint read_checkpoint(const std::string& path) {
     if (j.value("format", "") != "robozoo-checkpoint")
       throw std::runtime_error("not a robozoo checkpoint");
     if (j.at("format_version").get<int>() != Checkpoint::kFormatVersion)
-      throw std::runtime_error("checkpoint format version " + j.at("format_version").dump() +
-                               " is not the supported " + std::to_string(Checkpoint::kFormatVersion));
+      throw std::runtime_error(
+          "checkpoint format version " + j.at("format_version").dump() + " is not the supported " +
+          std::to_string(Checkpoint::kFormatVersion) +
+          (j.at("format_version").get<int>() < Checkpoint::kFormatVersion
+               ? " (written by an older robozoo, before node genes had drawing positions and the "
+                 "HyperNEAT topology rules; it cannot be resumed: start the run again)"
+               : " (written by a newer robozoo)"));
     Checkpoint c;
     c.run_id = j.at("run_id").get<std::string>();
     c.software_version = j.at("software_version").get<std::string>();

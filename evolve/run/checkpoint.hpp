@@ -1,7 +1,7 @@
 #pragma once
 // The state of a run between two generations, written atomically (write a
 // temporary file, fsync, rename) after every generation, so that a run killed at
-// any moment resumes exactly (issue 4, DESIGN.md section 4).
+// any moment resumes exactly (issue 4, docs/method.md section 4).
 #include <cstdint>
 #include <string>
 
@@ -12,7 +12,9 @@
 namespace robozoo {
 
 struct Checkpoint {
-  static constexpr int kFormatVersion = 1;
+  /// 2: node genes carry drawing positions, the population its speciation
+  /// threshold (HyperNEAT's topology rules). Version 1 is refused.
+  static constexpr int kFormatVersion = 2;
   std::string run_id;
   std::string software_version;
   nlohmann::json config;            ///< the resolved configuration (config_to_json)

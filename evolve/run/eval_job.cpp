@@ -18,7 +18,7 @@ std::vector<uint8_t> encode_eval_job(const Genome& g) {
 }
 
 Genome decode_eval_job(const std::vector<uint8_t>& bytes, const GenomeLayout& layout) {
-  genome_t m{};
+  cppn_genome_t m{};
   int used = -1;
   try {
     used = m.decode(bytes.data(), 0, static_cast<int>(bytes.size()));
@@ -26,7 +26,7 @@ Genome decode_eval_job(const std::vector<uint8_t>& bytes, const GenomeLayout& la
     used = -1;  // a corrupt count can make the generated decoder throw
   }
   if (used != static_cast<int>(bytes.size()))
-    throw std::invalid_argument("evaluation job is not a genome_t message");
+    throw std::invalid_argument("evaluation job is not a cppn_genome_t message");
   return genome_from_message(m, layout);
 }
 

@@ -66,9 +66,11 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     } catch (const ConfigError& e) {
       throw std::runtime_error(checkpoint_path_ + ": its configuration is invalid: " + e.what());
     }
-    if (c.software_version != software_version())
+    if (c.software_version != software_version() && !options_.force_version)
       throw std::runtime_error(checkpoint_path_ + ": written by robozoo " + c.software_version +
-                               ", this is " + software_version() + "; resume with that version");
+                               ", this is robozoo " + software_version() +
+                               "; resume with that version (another version may grow, simulate or breed "
+                               "differently), or --force to continue anyway");
     config_ = saved;
     run_id_ = c.run_id;
     rng_.set_state(c.rng_state);
@@ -129,14 +131,13 @@ void Evolution::run(const std::function<void(const ProgressReport&)>& on_generat
   }
 }
 
-void Evolution::publish_trajectory(const Genome& champion, int32_t generation, const EvalSummary& expected) {
+std::vector<pose_t> Evolution::champion_trajectory(const Genome& champion, int32_t generation,
+                                                   const EvalSummary& expected) const {
   const Robot robot = grow_genome(champion, config_.eval);
   Simulation sim(robot, config_.eval.sim);
   const int k = config_.pose_every;
-  auto pose = [&] {
-    const int64_t t = now_us();
-    emit(kChannelPose, encode_message(make_pose_message(run_id_, generation, champion.id, sim.state(), t)), t);
-  };
+  std::vector<pose_t> poses;
+  auto pose = [&] { poses.push_back(make_pose_message(run_id_, generation, champion.id, sim.state(), 0)); };
   pose();  // step 0: the starting pose
   while (sim.step()) {
     if (sim.state().step % k == 0) pose();
@@ -150,13 +151,19 @@ void Evolution::publish_trajectory(const Genome& champion, int32_t generation, c
                            " gave d = " + std::to_string(r.d) + " after " + std::to_string(r.steps_run) +
                            " steps, its evaluation gave d = " + std::to_string(expected.d) + " after " +
                            std::to_string(expected.steps_run));
+  return poses;
 }
 
 bool Evolution::step(const std::function<void(const ProgressReport&)>& on_generation) {
   if (finished_) return false;
+  // Everything of the generation is computed first (evaluation, the published
+  // robots, a new champion's trajectory, breeding), so that generation_t's
+  // generation_seconds covers all of it; then its messages are written in
+  // their usual order (generation, genome, morphology, poses) and the
+  // checkpoint saved.
   const auto t0 = std::chrono::steady_clock::now();
   const int32_t gen = population_->generation();
-  const std::vector<Genome>& genomes = population_->genomes();
+  const std::vector<Genome> genomes = population_->genomes();  // advance() replaces them
 
   StepTimings timing;
   auto tm = std::chrono::steady_clock::now();
@@ -197,48 +204,40 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   s.evaluations = evaluations_;
   s.champion_id = genomes[champ].id;
   s.num_species = static_cast<int32_t>(population_->species().size());
-  s.compatibility_threshold = population_->compatibility_threshold();
+  // The threshold this generation was speciated with (advance() moves it on).
+  s.compatibility_threshold = population_->speciation_threshold();
   s.eval_seconds = eval_seconds;
 
-  const Genome& champion = genomes[champ];
-  auto publish_genome = [&](size_t i) {
-    const Genome& g = genomes[i];
-    const EvalSummary& r = results[i];
-    const int64_t t = now_us();
-    emit(kChannelGenome,
-         encode_message(make_genome_message(run_id_, gen, g, population_->species_of(i),
-                                            GenomeScore{r.fitness, r.r, r.d, r.outcome}, t)),
-         t);
-    const Robot robot = grow_genome(g, config_.eval);
-    const int64_t t2 = now_us();
-    emit(kChannelMorphology, encode_message(make_morphology_message(run_id_, gen, g.id, robot, t2)), t2);
-  };
-
-  s.generation_seconds = seconds_since(t0);
+  // The published genomes with their species and robots.
   tm = std::chrono::steady_clock::now();
-  const int64_t t_gen = now_us();
-  emit(kChannelGeneration, encode_message(make_generation_message(run_id_, s, t_gen)), t_gen);
-  publish_genome(champ);
+  std::vector<size_t> published{champ};
   if (config_.publish_all)
     for (size_t i = 0; i < genomes.size(); ++i)
-      if (i != champ) publish_genome(i);
+      if (i != champ) published.push_back(i);
+  std::vector<int32_t> species_ids;
+  std::vector<Robot> robots;
+  for (size_t i : published) {
+    species_ids.push_back(population_->species_of(i));
+    robots.push_back(grow_genome(genomes[i], config_.eval));
+  }
+  timing.messages += seconds_since(tm);
+
   // The champion "changes" when its genes do: NEAT copies a champion unchanged
   // under a fresh id, and that copy's trajectory is already in the log.
+  const Genome& champion = genomes[champ];
   Genome anonymous = champion;
   anonymous.id = 0;
   const uint64_t champion_hash = genome_hash(anonymous);
-  timing.messages += seconds_since(tm);
   tm = std::chrono::steady_clock::now();
+  std::vector<pose_t> poses;
   if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated)
-    publish_trajectory(champion, gen, results[champ]);
+    poses = champion_trajectory(champion, gen, results[champ]);
   last_champion_hash_ = champion_hash;
   timing.trajectory = seconds_since(tm);
 
   std::vector<double> fitness(results.size());
   for (size_t i = 0; i < results.size(); ++i) fitness[i] = results[i].fitness;
   const bool last = gen + 1 >= config_.generations;
-  ProgressReport report;
-  report.summary = s;
   tm = std::chrono::steady_clock::now();
   if (last) {
     finished_ = true;
@@ -246,6 +245,33 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
     population_->advance(fitness, rng_);
   }
   timing.breeding = seconds_since(tm);
+
+  tm = std::chrono::steady_clock::now();
+  s.generation_seconds = seconds_since(t0);
+  const int64_t t_gen = now_us();
+  emit(kChannelGeneration, encode_message(make_generation_message(run_id_, s, t_gen)), t_gen);
+  for (size_t k = 0; k < published.size(); ++k) {
+    const size_t i = published[k];
+    const EvalSummary& r = results[i];
+    const int64_t t = now_us();
+    emit(kChannelGenome,
+         encode_message(make_genome_message(run_id_, gen, genomes[i], species_ids[k],
+                                            GenomeScore{r.fitness, r.r, r.d, r.outcome}, t)),
+         t);
+    const int64_t t2 = now_us();
+    emit(kChannelMorphology, encode_message(make_morphology_message(run_id_, gen, genomes[i].id, robots[k], t2)),
+         t2);
+  }
+  timing.messages += seconds_since(tm);
+  tm = std::chrono::steady_clock::now();
+  for (pose_t& p : poses) {
+    p.utime = now_us();
+    emit(kChannelPose, encode_message(p), p.utime);
+  }
+  timing.trajectory += seconds_since(tm);
+
+  ProgressReport report;
+  report.summary = s;
   elapsed_ += seconds_since(t0);
   tm = std::chrono::steady_clock::now();
   save_checkpoint();

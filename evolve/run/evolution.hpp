@@ -26,6 +26,7 @@ struct EvolveOptions {
   std::string checkpoint_path;  ///< empty: log_path + ".checkpoint"
   std::string lcm_url;          ///< empty: no live publishing
   bool resume = false;          ///< continue from the checkpoint
+  bool force_version = false;   ///< resume a checkpoint written by another robozoo version anyway
   bool background_checkpoint = false;  ///< write each generation's checkpoint on a thread while the
                                        ///< next generation is evaluated (robozoo-evolve --mpi: rank 0's
                                        ///< largest serial cost); a failed write is reported one
@@ -92,7 +93,10 @@ class Evolution {
   void emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime);
   void save_checkpoint();
   int generations_done() const;  ///< finished generations: what a checkpoint now would hold
-  void publish_trajectory(const Genome& champion, int32_t generation, const EvalSummary& expected);
+  /// Re-simulates a new champion: its pose messages (utime 0, set when sent),
+  /// after checking that the simulation is exactly the worker's evaluation.
+  std::vector<pose_t> champion_trajectory(const Genome& champion, int32_t generation,
+                                          const EvalSummary& expected) const;
 
   RunConfig config_;
   EvolveOptions options_;

@@ -1,6 +1,6 @@
 #pragma once
 // Evaluations in a pool of worker processes (evolve/parallel): genomes travel
-// as genome_t bytes, results as eval_result_t bytes, collected by index, so the
+// as cppn_genome_t bytes, results as eval_result_t bytes, collected by index, so the
 // run is bit-identical for any number of workers.
 #include <memory>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Contacts between the robot and the ground and between its own parts
-// (DESIGN.md section 2). Never between spheres of one body, nor between the
+// (docs/method.md section 2). Never between spheres of one body, nor between the
 // spheres of two bodies joined directly by a joint. Contacts are found in a
 // fixed order (ground contacts by sphere index, then sphere pairs (i, j), i < j,
 // in lexicographic order), so that the constraint order handed to ODE never

@@ -4,7 +4,7 @@
 
 namespace robozoo {
 
-/// Outcome codes are part of the log format (genome_t.outcome): never renumber.
+/// Outcome codes are part of the log format (cppn_genome_t.outcome): never renumber.
 enum class Outcome : int8_t {
   NotSimulated = 0,   ///< the robot lacked a required part (r < 15)
   Completed = 1,      ///< ran all steps

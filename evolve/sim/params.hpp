@@ -1,5 +1,5 @@
 #pragma once
-// Physics, controller, sensor and fitness-rule parameters (paper 2.4, DESIGN.md
+// Physics, controller, sensor and fitness-rule parameters (paper 2.4, docs/method.md
 // section 2). Defaults keep random robots of 1-50 spheres stable; each default
 // that was tuned says here how (measured with tools/robozoo-simstats on
 // evolve/sim/random_robot robots; details in evolve/sim/README.md).
@@ -34,10 +34,10 @@ struct SimParams {
                                      ///< Faults: 0.3-0.4 % of random and of grown robots at 10, 5 % of
                                      ///< grown ones at 20, 12 % at 30, half of all robots at 100.
   // Target and sensors
-  double target_x = 10.0;            ///< target position (m)
+  double target_x = 50.0;            ///< target position (m): far enough that no robot reaches it in 25 s
   double target_y = 0.0;             ///< (m)
   double target_z = 0.0;             ///< (m)
-  double distance_sensor_range = 20.0;  ///< distance at which the sensor reads 0 (m)
+  double distance_sensor_range = 100.0;  ///< distance at which the sensor reads 0 (m)
   double time_sensor_frequency = 1.0;   ///< f of sin(2 pi f t) (Hz)
   // Early stop: every body slower than both speeds and every neuron output changing
   // slower than rest_output_rate, for rest_steps consecutive steps.

@@ -1,6 +1,6 @@
 #pragma once
 // Random robots for stress tests, parameter tuning and benchmarks: trees of
-// spheres in one horizontal plane, placed under growth's rules (DESIGN.md
+// spheres in one horizontal plane, placed under growth's rules (docs/method.md
 // section 2, growth steps 3-5 and 7) but with random choices instead of a CPPN:
 // each new sphere's centre lies on its parent's horizontal circle of radius
 // r_parent, its radius is clamp(r_parent * s, r_min, r_max) with s uniform in

@@ -1,5 +1,5 @@
 #pragma once
-// Sensor values (paper Table 1, DESIGN.md section 2), in robot.sensors order:
+// Sensor values (paper Table 1, docs/method.md section 2), in robot.sensors order:
 //   distance = clamp(1 - d / range, 0, 1), d from the sensor sphere's world
 //              centre to the target;
 //   touch    = 1 while the sphere has any contact the collision rules generate

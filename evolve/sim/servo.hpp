@@ -1,5 +1,5 @@
 #pragma once
-// Joint actuation (DESIGN.md section 2): a motor neuron's output o in (-1, 1)
+// Joint actuation (docs/method.md section 2): a motor neuron's output o in (-1, 1)
 // sets its hinge's target angle o * range; a velocity servo drives the hinge
 // towards it with speed gain * (target - angle), capped at servo_max_speed, and
 // a torque limit that scales with the masses the hinge moves.

@@ -1,5 +1,5 @@
 #pragma once
-// ODE simulation of a grown robot (DESIGN.md section 2 and 4). The Robot is a
+// ODE simulation of a grown robot (docs/method.md section 2 and 4). The Robot is a
 // constant model; a Simulation holds the changing state. One Simulation owns one
 // ODE world; never step two worlds from two threads of one process (ODE's
 // dRandInt seed is process-global).

@@ -1,5 +1,5 @@
 #pragma once
-// The ODE world of one robot (DESIGN.md section 2): one ODE body per rigid
+// The ODE world of one robot (docs/method.md section 2): one ODE body per rigid
 // component, placed at its centre of mass and carrying one sphere geom per
 // sphere (offset from the body origin) and the spheres' combined mass; one
 // hinge per joint, anchored at the child sphere's centre, with stops at

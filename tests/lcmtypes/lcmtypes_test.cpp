@@ -9,7 +9,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "robozoo/generation_t.hpp"
-#include "robozoo/genome_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
 #include "robozoo/run_t.hpp"
@@ -55,8 +55,8 @@ robozoo::generation_t make_generation() {
   return m;
 }
 
-robozoo::genome_t make_genome() {
-  robozoo::genome_t m{};
+robozoo::cppn_genome_t make_genome() {
+  robozoo::cppn_genome_t m{};
   m.utime = 8;
   m.run_id = "run-42";
   m.generation = 3;
@@ -67,7 +67,7 @@ robozoo::genome_t make_genome() {
   m.d_term = 0.25;
   m.outcome = 1;
   for (int i = 0; i < 3; ++i) {
-    robozoo::node_t n;
+    robozoo::cppn_node_t n;
     n.id = i == 2 ? 20 : i;
     n.kind = static_cast<int8_t>(i == 2 ? 3 : 0);
     n.activation = static_cast<int8_t>(i);
@@ -223,7 +223,7 @@ TEST(LcmTypes, DecodeRejectsTruncatedBuffer) {
 
 TEST(LcmTypes, DecodeRejectsWrongType) {
   auto buf = encode(make_pose());
-  robozoo::genome_t out;  // different fingerprint
+  robozoo::cppn_genome_t out;  // different fingerprint
   EXPECT_LT(out.decode(buf.data(), 0, static_cast<int>(buf.size())), 0);
 }
 

@@ -1,5 +1,5 @@
 // robozoo-render live: unit checks, then the real thing on an LCM bus inside a
-// private network namespace (DESIGN.md section 5), next to robozoo-evolve and
+// private network namespace (docs/method.md section 5), next to robozoo-evolve and
 // lcm-logplayer. Runs alone (RUN_SERIAL: the name ends in _live_test).
 #include "render/live.hpp"
 

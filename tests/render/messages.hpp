@@ -31,8 +31,8 @@ inline generation_t generation_message(const std::string& id, int32_t g, int64_t
   return m;
 }
 
-inline genome_t genome_message(const std::string& id, int32_t g, int64_t genome_id, double fitness) {
-  genome_t m{};
+inline cppn_genome_t genome_message(const std::string& id, int32_t g, int64_t genome_id, double fitness) {
+  cppn_genome_t m{};
   m.run_id = id;
   m.generation = g;
   m.genome_id = genome_id;

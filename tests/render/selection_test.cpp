@@ -23,7 +23,7 @@ std::unique_ptr<MessageCollector> run_with(const std::string& id, std::vector<do
   for (size_t g = 0; g < fitness.size(); ++g) {
     const int64_t gid = 100 + static_cast<int64_t>(g);
     send(kChannelGeneration, generation_message(id, static_cast<int32_t>(g), gid));
-    genome_t gm = genome_message(id, static_cast<int32_t>(g), gid, fitness[g]);
+    cppn_genome_t gm = genome_message(id, static_cast<int32_t>(g), gid, fitness[g]);
     link_t l{};
     l.innovation = 1;
     l.weight = genes[g];
@@ -56,7 +56,7 @@ TEST(Selection, BestOfRunTopAndGeneration) {
 }
 
 TEST(Selection, GeneHashIgnoresIdsAndScores) {
-  genome_t x = genome_message("r", 0, 1, 1.0), y = genome_message("r", 5, 2, 9.0);
+  cppn_genome_t x = genome_message("r", 0, 1, 1.0), y = genome_message("r", 5, 2, 9.0);
   EXPECT_EQ(gene_hash(x), gene_hash(y));
   link_t l{};
   l.weight = 0.5;

@@ -27,7 +27,7 @@ TEST(VideoSubject, LoggedPosesACopysStreamOrResimulation) {
   EXPECT_FALSE(own.trajectory.resimulated);
   EXPECT_EQ(own.trajectory.step, logged.step);
   EXPECT_EQ(own.card.genome_id, champ.genome.genome_id);
-  EXPECT_EQ(own.target, Eigen::Vector3d(10, 0, 0));
+  EXPECT_EQ(own.target, Eigen::Vector3d(50, 0, 0));
 
   GenomeRecord copy = champ;  // NEAT's unchanged copy of a champion: same genes, no poses of its own
   copy.poses.clear();

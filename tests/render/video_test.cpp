@@ -45,7 +45,7 @@ TEST_F(VideoFromLog, H264OfTheExpectedFramesAndSizeThatMoves) {
   const VideoSubject subject = make_video_subject(*best[0].run, *best[0].genome);
   EXPECT_FALSE(subject.trajectory.resimulated);  // the champion's poses are in the log
   EXPECT_EQ(subject.trajectory.step.back(), 400);
-  EXPECT_EQ(subject.target, Eigen::Vector3d(10, 0, 0));
+  EXPECT_EQ(subject.target, Eigen::Vector3d(50, 0, 0));
   const VideoOptions o = small_video();
   const int expected = video_frame_count(subject.trajectory.end_time() - subject.trajectory.start_time(), o);
   EXPECT_EQ(expected, 51);  // 4 s / 2 x 25 fps + the first frame

@@ -93,7 +93,7 @@ TEST(ChampionCheck, ACycleInAFeedForwardRunIsReported) {
   const LoggedGenome& g = ix.genomes[0];
   LogContents log = f.log;
   LogRecord& rec = log.records[ix.events[g.genome_event].record];
-  genome_t m = decode_as<genome_t>(rec);
+  cppn_genome_t m = decode_as<cppn_genome_t>(rec);
   // A cycle between two outputs: 9 -> 10 -> 9.
   link_t a{}, b{};
   a.innovation = 1000000;

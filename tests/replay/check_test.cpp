@@ -129,7 +129,7 @@ TEST(Check, AChangedFitnessIsReported) {
   const int64_t target = nth_on(small_log(), kChannelGenome, 0);
   write_log(small_log(), dir / "fitness.lcmlog", [&](size_t i, LogRecord& r) {
     if (static_cast<int64_t>(i) != target) return true;
-    genome_t g = decode_as<genome_t>(r);
+    cppn_genome_t g = decode_as<cppn_genome_t>(r);
     g.fitness += 1.0;
     r.data = encode_message(g);
     return true;
@@ -146,7 +146,7 @@ TEST(Check, AGenomeReferringToAMissingNodeIsUnusable) {
   const int64_t target = nth_on(small_log(), kChannelGenome, 2);
   write_log(small_log(), dir / "node.lcmlog", [&](size_t i, LogRecord& r) {
     if (static_cast<int64_t>(i) != target) return true;
-    genome_t g = decode_as<genome_t>(r);
+    cppn_genome_t g = decode_as<cppn_genome_t>(r);
     g.links.back().from_node = 999;
     r.data = encode_message(g);
     return true;
@@ -272,7 +272,7 @@ LogContents with_champion_copy(double fitness_delta) {
   LogContents log = small_log();
   const LogRecord genome = log.records[nth_on(log, kChannelGenome, 0)];
   const LogRecord morphology = log.records[nth_on(log, kChannelMorphology, 0)];
-  genome_t g = decode_as<genome_t>(genome);
+  cppn_genome_t g = decode_as<cppn_genome_t>(genome);
   morphology_t m = decode_as<morphology_t>(morphology);
   g.genome_id = m.genome_id = 424242;
   g.generation = m.generation = 9;  // a generation with no generation_t: its genome counts as its champion

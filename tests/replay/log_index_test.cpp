@@ -38,8 +38,8 @@ generation_t generation(const std::string& run, int g, int64_t champion) {
   m.champion_id = champion;
   return m;
 }
-genome_t genome(const std::string& run, int g, int64_t id) {
-  genome_t m{};
+cppn_genome_t genome(const std::string& run, int g, int64_t id) {
+  cppn_genome_t m{};
   m.run_id = run;
   m.generation = g;
   m.genome_id = id;

@@ -49,7 +49,7 @@ struct SyntheticLog {
     gen.generation = g;
     gen.champion_id = genome_id;
     add(kChannelGeneration, gen, 10);
-    genome_t gm{};
+    cppn_genome_t gm{};
     gm.run_id = "r";
     gm.generation = g;
     gm.genome_id = genome_id;

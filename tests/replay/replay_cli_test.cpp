@@ -121,7 +121,7 @@ TEST(ReplayCli, PlayAndSimRunToTheEndOnAnInProcessBus) {
   EXPECT_EQ(play.status, 0) << play.output;
   EXPECT_NE(play.output.find("in 1 pass"), std::string::npos) << play.output;
   const LogContents log = read_event_log(evolve_log());
-  const genome_t champion = decode_as<genome_t>(log.records[nth_on(log, kChannelGenome, 3)]);
+  const cppn_genome_t champion = decode_as<cppn_genome_t>(log.records[nth_on(log, kChannelGenome, 3)]);
   const auto sim = replay("sim '" + evolve_log() + "' --lcm-url memq:// --speed 1000 --genome " +
                           std::to_string(champion.genome_id));
   EXPECT_EQ(sim.status, 0) << sim.output;

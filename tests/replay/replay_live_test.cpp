@@ -1,5 +1,5 @@
 // robozoo-replay on a real LCM bus: play and sim recorded by LCM's own
-// lcm-logger inside a private network namespace (DESIGN.md section 5). Runs
+// lcm-logger inside a private network namespace (docs/method.md section 5). Runs
 // alone (RUN_SERIAL): a starved subscriber drops multicast packets.
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -89,7 +89,7 @@ TEST(ReplayLive, ChosenChannelsArriveInOrderWithTheStateBeforeThePoses) {
   int trajectories = 0;
   for (const auto& r : bus.records) {
     if (r.channel == kChannelRun) run = true;
-    if (r.channel == kChannelGenome) genome_seen = decode_as<genome_t>(r).genome_id;
+    if (r.channel == kChannelGenome) genome_seen = decode_as<cppn_genome_t>(r).genome_id;
     if (r.channel == kChannelMorphology) morphology_seen = decode_as<morphology_t>(r).genome_id;
     if (r.channel != kChannelPose) continue;
     const pose_t p = decode_as<pose_t>(r);

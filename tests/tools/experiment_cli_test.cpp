@@ -46,16 +46,16 @@ TEST(ExperimentCli, AFinishedExperimentIsNotRedone) {
   ASSERT_EQ(first.status, 0) << first.output;
   EXPECT_NE(first.output.find("0 finished (skipped), 0 to resume, 2 to start"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("experiment 100.0%"), std::string::npos) << first.output;
-  const FileStamp ff = stamp(dir / "feedforward-s1.lcmlog"), rec = stamp(dir / "recurrent-s1.lcmlog");
+  const FileStamp ff = stamp(dir / "feedforward-s1.lcmlog"), rec = stamp(dir / "recurrent-s2.lcmlog");
   ASSERT_FALSE(ff.content.empty());
-  ASSERT_TRUE(read_checkpoint(dir / "recurrent-s1.lcmlog.checkpoint").finished);
+  ASSERT_TRUE(read_checkpoint(dir / "recurrent-s2.lcmlog.checkpoint").finished);
 
   const auto again = run_shell(shell(driver(dir.path, kTiny)));
   EXPECT_EQ(again.status, 0) << again.output;
   EXPECT_NE(again.output.find("2 finished (skipped), 0 to resume, 0 to start"), std::string::npos) << again.output;
   EXPECT_EQ(again.output.find("starting"), std::string::npos) << again.output;
   EXPECT_TRUE(stamp(dir / "feedforward-s1.lcmlog") == ff);
-  EXPECT_TRUE(stamp(dir / "recurrent-s1.lcmlog") == rec);
+  EXPECT_TRUE(stamp(dir / "recurrent-s2.lcmlog") == rec);
 
   // More trials later: only the new ones run.
   std::vector<std::string> more = kTiny;
@@ -64,11 +64,11 @@ TEST(ExperimentCli, AFinishedExperimentIsNotRedone) {
   EXPECT_EQ(extended.status, 0) << extended.output;
   EXPECT_NE(extended.output.find("2 finished (skipped), 0 to resume, 2 to start"), std::string::npos);
   EXPECT_TRUE(stamp(dir / "feedforward-s1.lcmlog") == ff);
-  EXPECT_TRUE(file_exists(dir / "recurrent-s2.lcmlog"));
+  EXPECT_TRUE(file_exists(dir / "recurrent-s5.lcmlog"));
 
   const auto status = run_shell(shell(driver(dir.path, more)) + " --status");
   EXPECT_EQ(status.status, 0);
-  EXPECT_NE(status.output.find("recurrent-s2          finished         2/2"), std::string::npos) << status.output;
+  EXPECT_NE(status.output.find("recurrent-s5          finished         2/2"), std::string::npos) << status.output;
 
   // Other sizes in the same folder: refused before anything runs.
   std::vector<std::string> other = kTiny;
@@ -87,7 +87,7 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
   const pid_t pid = spawn(driver(dir.path, sizes), dir / "driver1.txt");
   // Stop it (as Ctrl-C would) once the first trial is finished and the second has begun.
   const std::string ff_cp = dir / "feedforward-s1.lcmlog.checkpoint";
-  const std::string rec_cp = dir / "recurrent-s1.lcmlog.checkpoint";
+  const std::string rec_cp = dir / "recurrent-s2.lcmlog.checkpoint";
   for (int i = 0; i < 6000; ++i) {
     if (file_exists(rec_cp)) break;
     ::usleep(5000);
@@ -105,17 +105,17 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
   const auto resumed = run_shell(shell(driver(dir.path, sizes)));
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("1 finished (skipped), 1 to resume, 0 to start"), std::string::npos) << resumed.output;
-  EXPECT_NE(resumed.output.find("recurrent-s1: resuming after generation"), std::string::npos) << resumed.output;
+  EXPECT_NE(resumed.output.find("recurrent-s2: resuming after generation"), std::string::npos) << resumed.output;
   EXPECT_EQ(resumed.output.find("feedforward-s1: starting"), std::string::npos);
   EXPECT_TRUE(stamp(dir / "feedforward-s1.lcmlog") == ff);
   EXPECT_TRUE(read_checkpoint(rec_cp).finished);
 
   // The resumed trial equals an uninterrupted run, message for message.
   const auto reference = run_shell(shell({bin("robozoo-evolve"), "--log", ref / "rec.lcmlog", "--regime", "recurrent",
-                                          "--seed", "1", "--population", "16", "--generations", "4", "--steps", "300",
+                                          "--seed", "2", "--population", "16", "--generations", "4", "--steps", "300",
                                           "--workers", "1", "--quiet"}));
   ASSERT_EQ(reference.status, 0) << reference.output;
-  EXPECT_EQ(first_log_difference(read_event_log(dir / "recurrent-s1.lcmlog"), read_event_log(ref / "rec.lcmlog")), "");
+  EXPECT_EQ(first_log_difference(read_event_log(dir / "recurrent-s2.lcmlog"), read_event_log(ref / "rec.lcmlog")), "");
 }
 
 TEST(ExperimentCli, UsageErrors) {

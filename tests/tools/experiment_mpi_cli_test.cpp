@@ -45,7 +45,7 @@ std::vector<std::string> mpi_driver(const std::string& out, int ranks, const std
 LogContents local_trial(const TempDir& dir, const std::string& regime,
                                      const std::vector<std::string>& sizes) {
   std::vector<std::string> a = {bin("robozoo-evolve"), "--log", dir / (regime + ".lcmlog"), "--regime", regime,
-                                "--seed", "1", "--workers", "1", "--quiet"};
+                                "--seed", regime == "recurrent" ? "2" : "1", "--workers", "1", "--quiet"};
   a.insert(a.end(), sizes.begin(), sizes.end());
   const auto r = run_shell(shell(a));
   EXPECT_EQ(r.status, 0) << r.output;
@@ -62,8 +62,10 @@ TEST(ExperimentMpiCli, TrialsRunAsMpiJobsAndEqualLocalTrials) {
   EXPECT_NE(r.output.find("--mpi"), std::string::npos) << r.output;
   const std::vector<std::string> sizes = {"--population", "10", "--generations", "2", "--steps", "200"};
   for (const std::string regime : {"feedforward", "recurrent"}) {
-    ASSERT_TRUE(read_checkpoint(dir / (regime + "-s1.lcmlog.checkpoint")).finished) << regime;
-    const auto mpi = read_event_log(dir / (regime + "-s1.lcmlog"));
+    // Trial 1: feedforward seed 1, recurrent seed 2.
+    const std::string name = regime + (regime == "recurrent" ? "-s2" : "-s1");
+    ASSERT_TRUE(read_checkpoint(dir / (name + ".lcmlog.checkpoint")).finished) << regime;
+    const auto mpi = read_event_log(dir / (name + ".lcmlog"));
     EXPECT_GT(mpi.records.size(), 20u) << regime;
     EXPECT_EQ(first_log_difference(mpi, local_trial(ref, regime, sizes)), "") << regime;
   }
@@ -78,7 +80,7 @@ TEST(ExperimentMpiCli, AStoppedMpiExperimentLeavesNoRankAndResumesOnOtherRanks) 
   // Stop it (as Ctrl-C would) once the first trial has finished and the second
   // has checkpointed its first generation.
   const std::string ff_cp = dir / "feedforward-s1.lcmlog.checkpoint";
-  const std::string rec_cp = dir / "recurrent-s1.lcmlog.checkpoint";
+  const std::string rec_cp = dir / "recurrent-s2.lcmlog.checkpoint";
   for (int i = 0; i < 12000 && !file_exists(rec_cp); ++i) ::usleep(5000);
   ASSERT_TRUE(file_exists(rec_cp)) << read_file(dir / "driver1.txt");
   kill_process(pid, SIGINT);
@@ -95,9 +97,9 @@ TEST(ExperimentMpiCli, AStoppedMpiExperimentLeavesNoRankAndResumesOnOtherRanks) 
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("1 finished (skipped), 1 to resume, 0 to start"), std::string::npos)
       << resumed.output;
-  EXPECT_NE(resumed.output.find("recurrent-s1: resuming after generation"), std::string::npos) << resumed.output;
+  EXPECT_NE(resumed.output.find("recurrent-s2: resuming after generation"), std::string::npos) << resumed.output;
   EXPECT_TRUE(read_checkpoint(rec_cp).finished);
-  EXPECT_EQ(first_log_difference(read_event_log(dir / "recurrent-s1.lcmlog"),
+  EXPECT_EQ(first_log_difference(read_event_log(dir / "recurrent-s2.lcmlog"),
                                  local_trial(ref, "recurrent", evolve_sizes)),
             "");
 }
@@ -145,7 +147,7 @@ TEST(ExperimentMpiCli, AFailedMpiJobIsReportedWithItsLastWords) {
             std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("fake-mpirun: not enough slots for 4 ranks"), std::string::npos) << r.output;
-  EXPECT_EQ(r.output.find("recurrent-s1: starting"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("recurrent-s2: starting"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -79,7 +79,9 @@ TEST(StatsCli, HandMadeLogsGiveTheStatisticsWorkedOutByHand) {
 
   const auto geno = read_csv(out + "/genotype.csv");
   EXPECT_DOUBLE_EQ(num(geno.at("forward_links").at("feedforward_mean")), 1.5);
-  EXPECT_DOUBLE_EQ(num(geno.at("forward_links").at("recurrent_mean")), 1.0);
+  // By drawing position: recurrent s1 has 0 -> 20 -> 9 forward and 9 -> 20 not; s2 0 -> 9 forward, 9 -> 9 not.
+  EXPECT_DOUBLE_EQ(num(geno.at("forward_links").at("recurrent_mean")), 1.5);
+  EXPECT_DOUBLE_EQ(num(geno.at("cycle_links").at("recurrent_mean")), 1.5);
   EXPECT_DOUBLE_EQ(num(geno.at("links").at("recurrent_mean")), 2.5);
 
   const auto champ = read_csv(out + "/champion_changes.csv");

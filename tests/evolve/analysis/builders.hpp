@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "robozoo/genome_t.hpp"
+#include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
 
@@ -48,25 +48,27 @@ struct NodeSpec {
   int32_t id;
   int8_t kind;        ///< 0 input, 1 bias, 2 output, 3 hidden
   int8_t activation;  ///< 0 sigmoid, 1 cosine, 2 Gaussian
+  double position = -1;  ///< drawing position; < 0: 0 for inputs, 1 for outputs, 0.5 for hidden nodes
 };
 struct LinkSpec {
   int32_t from, to;
   bool enabled = true;
 };
 
-inline genome_t make_genome(const std::vector<NodeSpec>& nodes, const std::vector<LinkSpec>& links,
+inline cppn_genome_t make_genome(const std::vector<NodeSpec>& nodes, const std::vector<LinkSpec>& links,
                             int64_t genome_id = 1, int32_t generation = 0, double fitness = 0, int8_t outcome = 1) {
-  genome_t g{};
+  cppn_genome_t g{};
   g.run_id = "test";
   g.generation = generation;
   g.genome_id = genome_id;
   g.fitness = fitness;
   g.outcome = outcome;
   for (const auto& n : nodes) {
-    node_t x{};
+    cppn_node_t x{};
     x.id = n.id;
     x.kind = n.kind;
     x.activation = n.activation;
+    x.position = n.position >= 0 ? n.position : n.kind == 2 ? 1.0 : n.kind == 3 ? 0.5 : 0.0;
     g.nodes.push_back(x);
   }
   g.num_nodes = static_cast<int32_t>(g.nodes.size());

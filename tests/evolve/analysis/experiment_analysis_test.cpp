@@ -83,8 +83,10 @@ TEST(ExperimentAnalysis, BestOfRunCppnsByHand) {
   EXPECT_DOUBLE_EQ(get(e.genotype, "links").control.mean, 1.5);
   EXPECT_DOUBLE_EQ(get(e.genotype, "links").experimental.mean, 2.5);
   EXPECT_DOUBLE_EQ(get(e.genotype, "forward_links").control.mean, 1.5);
-  EXPECT_DOUBLE_EQ(get(e.genotype, "forward_links").experimental.mean, 1.0);
-  EXPECT_DOUBLE_EQ(get(e.genotype, "recurrent_links").experimental.mean, 1.5);
+  // Forward by drawing position: 0 -> 20 and 20 -> 9 (0 -> 0.5 -> 1) but not 9 -> 20; 9 -> 9 is recurrent.
+  EXPECT_DOUBLE_EQ(get(e.genotype, "forward_links").experimental.mean, 1.5);
+  EXPECT_DOUBLE_EQ(get(e.genotype, "recurrent_links").experimental.mean, 1.0);
+  EXPECT_DOUBLE_EQ(get(e.genotype, "cycle_links").experimental.mean, 1.5);
 }
 
 TEST(ExperimentAnalysis, ChampionChangesByHand) {

@@ -12,7 +12,7 @@
 // recurrent s1:    g0 F 15.0 (-1,0); g1 G 16.0 (-1,0,1) changed +1.0; g2 H 18.0
 //                  (-1,0,0,1) changed +2.0. Best H: 4 spheres, 2 leaves, depth 2,
 //                  poses: only the root on the ground. CPPN: nodes 0, 9, 20 (cosine);
-//                  links 0->20, 20->9, 9->20: 1 forward, 2 on a cycle.
+//                  links 0->20, 20->9, 9->20: 2 forward (by position), 1 recurrent, 2 on a cycle.
 // recurrent s2:    g0 I 15.0 (-1,0,1); g1 J 15.5 (-1,0,0) changed +0.5; g2 K 16.5
 //                  (-1,0,0) other radii, same +1.0. Best K: 3 spheres, 2 leaves,
 //                  depth 1, poses: all 3 on the ground. CPPN: nodes 0, 9; links

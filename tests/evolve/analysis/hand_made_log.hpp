@@ -63,10 +63,10 @@ inline void write_hand_log(const std::string& path, const HandRun& run) {
     m.champion_id = h.champion_id;
     log.write(kChannelGeneration, encode_message(m), t++);
     // Another genome of the same generation (as with --publish-all): not the champion.
-    genome_t other = make_genome({{0, 0, 0}}, {}, h.champion_id + 1000, gen, 1.0, 0);
+    cppn_genome_t other = make_genome({{0, 0, 0}}, {}, h.champion_id + 1000, gen, 1.0, 0);
     other.run_id = run_id;
     log.write(kChannelGenome, encode_message(other), t++);
-    genome_t champ = make_genome(h.nodes, h.links, h.champion_id, gen, h.best_fitness, h.outcome);
+    cppn_genome_t champ = make_genome(h.nodes, h.links, h.champion_id, gen, h.best_fitness, h.outcome);
     champ.run_id = run_id;
     log.write(kChannelGenome, encode_message(champ), t++);
     morphology_t morph = make_morphology(h.parents, h.radii, {}, {}, h.champion_id, gen);

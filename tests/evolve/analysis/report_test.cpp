@@ -28,8 +28,9 @@ TEST(Report, PutsEachClaimBesideRobozoosFigure) {
   // The fitness claim: recurrent fitter, significantly; here 21 vs 11 with p < 0.001.
   EXPECT_NE(md.find("| best-of-run fitness | recurrent significantly fitter"), std::string::npos) << md;
   EXPECT_NE(md.find("| 11.00 ± 0.58 | 21.00 ± 0.58 | < 0.001 *** | yes, significant |"), std::string::npos) << md;
-  // Joints: the paper finds fewer with recurrent CPPNs; equal samples here give t = 0, p = 1.
-  EXPECT_NE(md.find("| 4.00 ± 0.58 | 4.00 ± 0.58 | 1.000  | no: no difference |"), std::string::npos)
+  // Joints: the paper finds fewer with recurrent CPPNs; equal samples here give t = 0, p = 1:
+  // the data cannot decide.
+  EXPECT_NE(md.find("| 4.00 ± 0.58 | 4.00 ± 0.58 | 1.000  | inconclusive (p ≥ 0.05) |"), std::string::npos)
       << md;
   // Spheres: "not significant" in the paper, strongly different here.
   EXPECT_NE(md.find("no: robozoo finds a significant difference"), std::string::npos);
@@ -44,6 +45,42 @@ TEST(Report, PutsEachClaimBesideRobozoosFigure) {
   EXPECT_NE(md.find("**feed-forward**: robozoo-render is missing"), std::string::npos);
   EXPECT_NE(md.find("![recurrent zoo](zoo-recurrent.png)"), std::string::npos);
   EXPECT_NE(md.find("```sh\nbuild/bin/robozoo-stats runs/x\n```"), std::string::npos);
+}
+
+TEST(Report, WithoutSignificanceNothingAgreesOrDisagrees) {
+  ReportInputs in = inputs();
+  // Recurrent fitter, as the paper says, but not significantly (p about 0.4).
+  in.analysis.fitness = {compare("best_fitness", "best-of-run fitness", "fitness units", {10, 12, 14}, {11, 13, 15})};
+  // Spheres: the paper finds no significant difference, and neither does this sample.
+  in.analysis.morphology = {compare("spheres", "spheres", "count", {3, 4, 5}, {3, 4, 6})};
+  in.analysis.control_arm = "feedforward";
+  in.analysis.experimental_arm = "recurrent";
+  const std::string md = markdown_report(in);
+  EXPECT_EQ(md.find("| yes"), std::string::npos) << md;
+  EXPECT_EQ(md.find("same direction"), std::string::npos) << md;
+  size_t n = 0;
+  for (size_t at = md.find("inconclusive (p ≥ 0.05)"); at != std::string::npos;
+       at = md.find("inconclusive (p ≥ 0.05)", at + 1))
+    ++n;
+  EXPECT_EQ(n, 3u) << md;  // fitness, spheres and the topology share
+}
+
+TEST(Report, NamesTheArmsAndTheLargestDisplacement) {
+  ReportInputs in = inputs();
+  in.analysis.control_arm = "feedforward";
+  in.analysis.experimental_arm = "recurrent-sparse";
+  RunAnalysis r;
+  r.max_d = 7.25;
+  in.analysis.experimental.push_back(r);
+  in.target_distance = 50;
+  in.outcome_pngs = {"outcomes-feedforward.png"};
+  const std::string md = markdown_report(in);
+  EXPECT_NE(md.find("| robozoo feed-forward | robozoo recurrent (sparse start) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("7.250 m (recurrent (sparse start))"), std::string::npos) << md;
+  EXPECT_NE(md.find("of the 50.0 m from the start to the target: fitness did not come near its ceiling"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("![outcome shares](outcomes-feedforward.png)"), std::string::npos) << md;
 }
 
 TEST(Report, Formatting) {

@@ -7,6 +7,8 @@
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
 #include "evolve/messages/build.hpp"
+#include "evolve/messages/safe_decode.hpp"
+#include "evolve/neat/population.hpp"
 #include "evolve/run/checkpoint.hpp"
 #include "tests/support/evolve_runs.hpp"
 
@@ -49,6 +51,89 @@ TEST(EvolveCli, OneAndTwoWorkersGiveIdenticalLogs) {
     std::vector<uint8_t> norm;
     EXPECT_TRUE(normalize_message(r.channel, r.data, norm)) << r.channel;
   }
+}
+
+// Decodes every message of `channel` in `log` as T (failing the test on one that does not).
+template <class T>
+std::vector<T> decode_all(const LogContents& log, const std::string& channel) {
+  std::vector<T> out;
+  for (const auto& r : log.records) {
+    if (r.channel != channel) continue;
+    T m;
+    std::string why;
+    EXPECT_TRUE(safe_decode(r.data.data(), r.data.size(), m, &why)) << why;
+    out.push_back(m);
+  }
+  return out;
+}
+
+TEST(EvolveCli, LogsCarryTheRegimesTopologyTheVersionAndTruthfulFigures) {
+  TempDir dir;
+  ASSERT_EQ(run_evolve(dir / "ff.lcmlog", 2, {"--regime", "feedforward", "--publish-all"}), 0);
+  ASSERT_EQ(run_evolve(dir / "rec.lcmlog", 2, {"--regime", "recurrent", "--publish-all"}), 0);
+  const auto ff = read_event_log(dir / "ff.lcmlog"), rec = read_event_log(dir / "rec.lcmlog");
+  NeatParams p;
+  // Every logged genome of the control regime holds forward links only; every
+  // generation-0 genome of the experimental regime holds the 209 start links.
+  for (const auto& m : decode_all<cppn_genome_t>(ff, kChannelGenome)) {
+    const Genome g = genome_from_message(m, robot_layout());
+    EXPECT_NO_THROW(validate_regime_links(g, Regime::FeedForward, p)) << "genome " << g.id;
+    EXPECT_EQ(count_recurrent_links(g), 0);
+    if (m.generation == 0) EXPECT_EQ(g.links.size(), 99u);
+  }
+  int gen0 = 0;
+  for (const auto& m : decode_all<cppn_genome_t>(rec, kChannelGenome)) {
+    const Genome g = genome_from_message(m, robot_layout());
+    EXPECT_NO_THROW(validate_regime_links(g, Regime::Recurrent, p));
+    if (m.generation != 0) continue;
+    ++gen0;
+    EXPECT_EQ(g.links.size(), 209u);
+    EXPECT_EQ(count_recurrent_links(g), 110);
+  }
+  EXPECT_EQ(gen0, 24);
+  // The version is the program's, the threshold the one each generation was speciated with.
+  const auto version = run_shell(bin("robozoo-evolve") + " --version");
+  const auto runs = decode_all<run_t>(rec, kChannelRun);
+  ASSERT_FALSE(runs.empty());
+  EXPECT_NE(version.output.find("git " + runs.front().software_version), std::string::npos) << version.output;
+  EXPECT_EQ(runs.front().software_version, software_version());
+  const auto gens = decode_all<generation_t>(rec, kChannelGeneration);
+  ASSERT_EQ(gens.size(), 4u);
+  EXPECT_EQ(gens[0].compatibility_threshold, 6.0);
+  for (size_t g = 1; g < gens.size(); ++g) {
+    const double step = gens[g].compatibility_threshold - gens[g - 1].compatibility_threshold;
+    // The threshold moves by 0.3 after each speciation, towards 8 species.
+    EXPECT_TRUE(std::fabs(std::fabs(step) - 0.3) < 1e-12 || step == 0.0) << "generation " << g << ": " << step;
+    EXPECT_EQ(step > 0, gens[g - 1].num_species > 8) << "generation " << g;
+  }
+  for (const auto& g : gens) {
+    EXPECT_GE(g.generation_seconds, g.eval_seconds);
+    EXPECT_EQ(g.n_not_simulated + g.n_completed + g.n_stopped_early + g.n_accel_fault + g.n_rolling_contact +
+                  g.n_rolling_spin,
+              24);
+  }
+}
+
+TEST(EvolveCli, ResumeRefusesAnotherVersionsCheckpointUnlessForced) {
+  TempDir dir;
+  const std::string log = dir / "v.lcmlog";
+  const pid_t pid = spawn(evolve_args(log, 1, {}, kSmall), dir / "out.txt");
+  for (int i = 0; i < 2000 && !file_exists(log + ".checkpoint"); ++i) ::usleep(10000);
+  ASSERT_TRUE(file_exists(log + ".checkpoint"));
+  kill_process(pid, SIGKILL);
+  wait_status(pid);
+  Checkpoint c = read_checkpoint(log + ".checkpoint");
+  c.software_version = "0123456789ab";
+  write_checkpoint(log + ".checkpoint", c);
+  const auto refused = run_shell(join(evolve_args(log, 1, {"--resume"}, kSmall)));
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("written by robozoo 0123456789ab"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("--force"), std::string::npos) << refused.output;
+  const auto forced = run_shell(join(evolve_args(log, 1, {"--resume", "--force"}, kSmall)));
+  EXPECT_EQ(forced.status, 0) << forced.output;
+  EXPECT_TRUE(read_checkpoint(log + ".checkpoint").finished);
+  const auto alone = run_shell(join(evolve_args(dir / "other.lcmlog", 1, {"--force"}, kSmall)));
+  EXPECT_EQ(alone.status, 2) << alone.output;
 }
 
 TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {

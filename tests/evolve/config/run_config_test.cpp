@@ -104,5 +104,53 @@ TEST(RunConfig, BadFilesNameTheFile) {
   for (const auto& p : {bad, badtoml, unknown}) std::remove(p.c_str());
 }
 
+TEST(RunConfig, TopologyRulesAreKeysWithHyperNeatDefaults) {
+  const nlohmann::json j = config_to_json(RunConfig{});
+  EXPECT_EQ(j["neat"]["link_rule"], "positions");
+  EXPECT_EQ(j["neat"]["self_loops"], false);
+  EXPECT_EQ(j["neat"]["initial_links"], "all_allowed");
+  EXPECT_EQ(j["neat"]["add_link"], "uniform");
+  EXPECT_EQ(j["neat"]["add_node"], "hyperneat");
+  EXPECT_EQ(j["neat"]["compatibility"], "hyperneat");
+  EXPECT_EQ(j["neat"]["disabled_gene_probability"], 0.0);
+  EXPECT_EQ(j["sim"]["target_x"], 50.0);
+  EXPECT_EQ(j["sim"]["distance_sensor_range"], 100.0);
+  // The classic variants are reachable, and a wrong name is refused naming the key and the choices.
+  const RunConfig c = config_from_json({{"neat", {{"link_rule", "cycle_test"}, {"initial_links", "inputs_to_outputs"},
+                                                  {"add_link", "tries"}, {"add_node", "classic"},
+                                                  {"compatibility", "classic"}, {"self_loops", true}}}});
+  EXPECT_EQ(c.neat.link_rule, LinkRule::CycleTest);
+  EXPECT_EQ(c.neat.initial_links, InitialLinks::InputsToOutputs);
+  EXPECT_EQ(c.neat.add_link, AddLinkRule::Tries);
+  EXPECT_EQ(c.neat.add_node, AddNodeRule::Classic);
+  EXPECT_EQ(c.neat.compatibility, CompatibilityRule::Classic);
+  EXPECT_TRUE(c.neat.self_loops);
+  EXPECT_EQ(config_from_json(config_to_json(c)).neat.add_node, AddNodeRule::Classic);
+  try {
+    config_from_json({{"neat", {{"add_node", "split"}}}});
+    FAIL() << "accepted an unknown add-node rule";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("neat.add_node"), std::string::npos) << what;
+    EXPECT_NE(what.find("hyperneat, classic"), std::string::npos) << what;
+  }
+  EXPECT_THROW(config_from_json({{"neat", {{"link_rule", 3}}}}), ConfigError);
+  EXPECT_THROW(config_from_json({{"neat", {{"disabled_gene_probability", 1.5}}}}), ConfigError);
+}
+
+TEST(RunConfig, AssignmentsSetOneKey) {
+  EXPECT_EQ(config_assignment("neat.initial_links=inputs_to_outputs"),
+            nlohmann::json({{"neat", {{"initial_links", "inputs_to_outputs"}}}}));
+  EXPECT_EQ(config_assignment("sim.target_x=20"), nlohmann::json({{"sim", {{"target_x", 20}}}}));
+  EXPECT_EQ(config_assignment("neat.self_loops=true"), nlohmann::json({{"neat", {{"self_loops", true}}}}));
+  EXPECT_EQ(config_assignment("regime=\"recurrent\""), nlohmann::json({{"regime", "recurrent"}}));
+  const RunConfig c = config_from_json(config_assignment("neat.initial_links=inputs_to_outputs"));
+  EXPECT_EQ(c.neat.initial_links, InitialLinks::InputsToOutputs);
+  EXPECT_THROW(config_assignment("neat.initial_links"), ConfigError);
+  EXPECT_THROW(config_assignment("=3"), ConfigError);
+  EXPECT_THROW(config_assignment("neat..x=3"), ConfigError);
+  EXPECT_THROW(config_from_json(config_assignment("neat.no_such_key=1")), ConfigError);
+}
+
 }  // namespace
 }  // namespace robozoo

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 
 namespace robozoo {
 namespace {
@@ -22,15 +23,50 @@ bool has(const std::vector<std::string>& v, const std::vector<std::string>& seq)
   return std::search(v.begin(), v.end(), seq.begin(), seq.end()) != v.end();
 }
 
-TEST(TrialPlan, SeedBySeedBothRegimes) {
+TEST(TrialPlan, TrialByTrialBothRegimesNeverSharingASeed) {
+  // Trial k of arm a uses seed 3 (k - 1) + a + 1: feedforward 1, 4; recurrent 2, 5.
   const auto t = plan_trials(small());
   ASSERT_EQ(t.size(), 4u);
   EXPECT_EQ(t[0].name(), "feedforward-s1");
-  EXPECT_EQ(t[1].name(), "recurrent-s1");
-  EXPECT_EQ(t[2].name(), "feedforward-s2");
-  EXPECT_EQ(t[3].name(), "recurrent-s2");
-  EXPECT_EQ(t[3].log_path, "/tmp/x/recurrent-s2.lcmlog");
-  EXPECT_EQ(t[3].output_path, "/tmp/x/recurrent-s2.out");
+  EXPECT_EQ(t[1].name(), "recurrent-s2");
+  EXPECT_EQ(t[2].name(), "feedforward-s4");
+  EXPECT_EQ(t[3].name(), "recurrent-s5");
+  EXPECT_EQ(t[3].number, 2);
+  EXPECT_EQ(t[3].regime, Regime::Recurrent);
+  EXPECT_EQ(t[3].log_path, "/tmp/x/recurrent-s5.lcmlog");
+  EXPECT_EQ(t[3].output_path, "/tmp/x/recurrent-s5.out");
+}
+
+TEST(TrialPlan, ThirdArmHasItsOwnSeedsAndTheControlsStart) {
+  ExperimentParams p = small();
+  p.trials = 30;
+  p.arms = {Arm::FeedForward, Arm::Recurrent, Arm::RecurrentSparse};
+  const auto t = plan_trials(p);
+  ASSERT_EQ(t.size(), 90u);
+  std::set<int64_t> seeds;
+  for (const auto& x : t) {
+    EXPECT_TRUE(seeds.insert(x.seed).second) << "seed " << x.seed << " used twice";
+    EXPECT_EQ(x.seed, trial_seed(x.arm, x.number));
+  }
+  EXPECT_EQ(*seeds.begin(), 1);
+  EXPECT_EQ(*seeds.rbegin(), 90);
+  EXPECT_EQ(t[2].name(), "recurrent-sparse-s3");
+  EXPECT_EQ(t[2].regime, Regime::Recurrent);
+  const auto a = evolve_arguments(t[2], p, false);
+  EXPECT_TRUE(has(a, {"--set", "neat.initial_links=inputs_to_outputs"}));
+  EXPECT_TRUE(has(a, {"--run-id", "recurrent-sparse-s3"}));
+  EXPECT_FALSE(has(evolve_arguments(t[1], p, false), {"--set", "neat.initial_links=inputs_to_outputs"}));
+  // The seeds of the first two arms do not depend on whether the third runs.
+  ExperimentParams two = small();
+  two.trials = 30;
+  const auto u = plan_trials(two);
+  for (size_t i = 0; i < u.size(); ++i) EXPECT_EQ(u[i].seed, t[i / 2 * 3 + i % 2].seed);
+  EXPECT_EQ(arm_of(Regime::Recurrent, InitialLinks::InputsToOutputs), Arm::RecurrentSparse);
+  EXPECT_EQ(arm_of(Regime::Recurrent, InitialLinks::AllAllowed), Arm::Recurrent);
+  EXPECT_EQ(arm_of(Regime::FeedForward, InitialLinks::InputsToOutputs), Arm::FeedForward);
+  EXPECT_THROW(arm_from_name("sparse"), std::invalid_argument);
+  p.arms = {Arm::Recurrent, Arm::Recurrent};
+  EXPECT_THROW(plan_trials(p), std::invalid_argument);
 }
 
 TEST(TrialPlan, EvolveArgumentsCarryTheSizesAlsoOnResume) {
@@ -38,9 +74,9 @@ TEST(TrialPlan, EvolveArgumentsCarryTheSizesAlsoOnResume) {
   const Trial t = plan_trials(p)[1];
   for (bool resume : {false, true}) {
     const auto a = evolve_arguments(t, p, resume);
-    EXPECT_TRUE(has(a, {"--log", "/tmp/x/recurrent-s1.lcmlog"}));
+    EXPECT_TRUE(has(a, {"--log", "/tmp/x/recurrent-s2.lcmlog"}));
     EXPECT_TRUE(has(a, {"--regime", "recurrent"}));
-    EXPECT_TRUE(has(a, {"--seed", "1"}));
+    EXPECT_TRUE(has(a, {"--seed", "2"}));
     EXPECT_TRUE(has(a, {"--population", "12"}));
     EXPECT_TRUE(has(a, {"--generations", "3"}));
     EXPECT_TRUE(has(a, {"--steps", "200"}));
@@ -89,7 +125,7 @@ TEST(TrialPlan, MpiTrialCommandWrapsRobozooEvolveInTheLauncher) {
     EXPECT_EQ(std::vector<std::string>(cmd.begin(), cmd.begin() + 5),
               (std::vector<std::string>{"/usr/bin/mpirun", "--oversubscribe", "-np", "4", "/bin/robozoo-evolve"}));
     EXPECT_EQ(cmd.back(), "--mpi");
-    EXPECT_TRUE(has(cmd, {"--log", "/tmp/x/recurrent-s1.lcmlog"}));
+    EXPECT_TRUE(has(cmd, {"--log", "/tmp/x/recurrent-s2.lcmlog"}));
     EXPECT_TRUE(has(cmd, {"--steps", "200"}));
     EXPECT_EQ(std::count(cmd.begin(), cmd.end(), "--workers"), 0);
     EXPECT_EQ(std::count(cmd.begin(), cmd.end(), "--resume"), resume ? 1 : 0);

@@ -19,16 +19,16 @@ struct Fixture {
     p.generations = 5;
     p.population = 12;
     p.out_dir = dir.path;
-    trial = plan_trials(p)[1];  // recurrent-s1
+    trial = plan_trials(p)[1];  // recurrent-s2
   }
-  void checkpoint(int32_t population_generation, bool finished, int population = 12, int64_t seed = 1) {
+  void checkpoint(int32_t population_generation, bool finished, int population = 12, int64_t seed = 2) {
     RunConfig c;
     c.regime = Regime::Recurrent;
     c.seed = seed;
     c.generations = 5;
     c.neat.population = population;
     Checkpoint cp;
-    cp.run_id = "recurrent-s1";
+    cp.run_id = "recurrent-s2";
     cp.config = config_to_json(c);
     cp.population.generation = population_generation;
     cp.elapsed_seconds = 12.5;
@@ -61,7 +61,7 @@ TEST(TrialStatus, ACheckpointOfAnotherExperimentIsRefused) {
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("seed 7, not 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("seed 7, not 2"), std::string::npos) << what;
     EXPECT_NE(what.find("population 60, not 12"), std::string::npos) << what;
   }
   ExperimentParams steps = f.p;

@@ -18,9 +18,9 @@ inline Genome bare_robot_genome() {
   Genome g;
   g.id = 7;
   for (int i = 0; i < l.num_inputs; ++i)
-    g.nodes.push_back({i, i == l.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear});
+    g.nodes.push_back({i, i == l.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear, 0.0});
   for (int o = 0; o < l.num_outputs; ++o)
-    g.nodes.push_back({l.num_inputs + o, NodeKind::Output, l.output_activation});
+    g.nodes.push_back({l.num_inputs + o, NodeKind::Output, l.output_activation, 1.0});
   return g;
 }
 

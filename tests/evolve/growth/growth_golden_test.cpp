@@ -22,11 +22,11 @@ struct GoldenSet {
   int multi_sphere = 0;
 };
 
-void grow_set(GoldenSet& set, Regime regime, bool fully_recurrent, int count, uint64_t seed) {
+void grow_set(GoldenSet& set, Regime regime, InitialLinks start, int count, uint64_t seed) {
   NeatParams neat;
+  neat.initial_links = start;
   RandomGenomeParams rp;
   rp.rounds = 30;
-  rp.fully_recurrent_start = fully_recurrent;
   Rng rng(seed);
   for (int i = 0; i < count; ++i) {
     const Genome g = random_evolved_genome(robot_layout(), regime, neat, rp, rng, i);
@@ -40,13 +40,13 @@ void grow_set(GoldenSet& set, Regime regime, bool fully_recurrent, int count, ui
 
 TEST(GrowthGolden, RandomGenomesOfBothRegimesGrowTheRecordedRobots) {
   GoldenSet set;
-  grow_set(set, Regime::FeedForward, false, 60, 101);
-  grow_set(set, Regime::Recurrent, false, 60, 202);
-  grow_set(set, Regime::Recurrent, true, 30, 303);
+  grow_set(set, Regime::FeedForward, InitialLinks::AllAllowed, 60, 101);
+  grow_set(set, Regime::Recurrent, InitialLinks::InputsToOutputs, 60, 202);
+  grow_set(set, Regime::Recurrent, InitialLinks::AllAllowed, 30, 303);  // fully recurrent: 209 links
   // The set grows real robots, not roots alone.
   EXPECT_GT(set.multi_sphere, 40);
   EXPECT_GT(set.spheres, 1000);
-  EXPECT_EQ(set.hash, 0xfa2d5670d569d557ull) << std::hex << set.hash << std::dec << " spheres " << set.spheres
+  EXPECT_EQ(set.hash, 0x8f94d271c7770c17ull) << std::hex << set.hash << std::dec << " spheres " << set.spheres
                               << " multi " << set.multi_sphere;
 }
 

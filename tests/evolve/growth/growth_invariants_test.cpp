@@ -1,4 +1,4 @@
-// grow() over 1,000 random CPPNs of both regimes: every rule of DESIGN.md
+// grow() over 1,000 random CPPNs of both regimes: every rule of docs/method.md
 // section 2 checked on every robot, re-deriving what can be re-derived from
 // fresh CPPN queries, independently of the growth code.
 #include <gtest/gtest.h>
@@ -152,7 +152,7 @@ class Checker {
 
   // Rules (b), (c), (d) for a sphere of radius r at x attached to `parent`
   // (jointed or fused), against the spheres in `existing`: written from
-  // DESIGN.md's text, independently of evolve/growth/placement.cpp.
+  // docs/method.md's text, independently of evolve/growth/placement.cpp.
   bool admissible(const Eigen::Vector3d& x, double r, int parent, bool jointed,
                   const std::vector<int>& existing) const {
     if (!(std::abs(x.x()) <= p_.bound && std::abs(x.y()) <= p_.bound)) return false;  // (d)

@@ -1,6 +1,6 @@
 // grow() on hand-built CPPNs whose outputs are known constants (or simple
 // functions of x and r_parent), so the morphology can be worked out by hand from
-// the rules of DESIGN.md section 2; and determinism.
+// the rules of docs/method.md section 2; and determinism.
 #include "evolve/growth/growth.hpp"
 
 #include <gtest/gtest.h>
@@ -342,8 +342,8 @@ TEST(Grow, RejectsBadInput) {
   small.bias_input = 2;
   small.num_outputs = 1;
   Genome tiny;
-  tiny.nodes = {{0, NodeKind::Input, Activation::Linear}, {1, NodeKind::Input, Activation::Linear},
-                {2, NodeKind::Bias, Activation::Linear}, {3, NodeKind::Output, Activation::SignedSigmoid}};
+  tiny.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0}, {1, NodeKind::Input, Activation::Linear, 0.0},
+                {2, NodeKind::Bias, Activation::Linear, 0.0}, {3, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
   Network wrong(tiny, small);
   EXPECT_THROW(grow(wrong, {}), std::invalid_argument);
 }

@@ -40,8 +40,8 @@ pose_t pose(int bodies, int spheres, int neurons, int sensors) {
   return m;
 }
 
-genome_t genome(int nodes, int links) {
-  genome_t m{};
+cppn_genome_t genome(int nodes, int links) {
+  cppn_genome_t m{};
   m.run_id = "g";
   m.num_nodes = nodes;
   m.nodes.resize(nodes);
@@ -121,10 +121,31 @@ TEST(SafeDecode, RandomGarbageNeverDecodesOrThrows) {
     auto b = good;
     const int flips = 1 + static_cast<int>(rng.uniform_int(0, 4));
     for (int f = 0; f < flips; ++f) b[rng.index(b.size())] ^= static_cast<uint8_t>(1 + rng.uniform_int(0, 254));
-    genome_t out;
+    cppn_genome_t out;
     // Must not throw; may decode if only payload bytes changed.
     EXPECT_NO_THROW(safe_decode(b.data(), b.size(), out));
   }
+}
+
+TEST(SafeDecode, AGenomeOfAnOlderRobozooIsNamedAsSuch) {
+  // genome_t had no node positions; a log that holds one was written before
+  // HyperNEAT's topology rules and cannot be replayed by this robozoo.
+  genome_t old{};
+  old.run_id = "old";
+  old.num_nodes = 1;
+  old.nodes.resize(1);
+  const auto bytes = encode_message(old);
+  cppn_genome_t out;
+  std::string why;
+  EXPECT_FALSE(safe_decode(bytes.data(), bytes.size(), out, &why));
+  EXPECT_NE(why.find("older robozoo"), std::string::npos) << why;
+  EXPECT_NE(why.find("cppn_genome_t"), std::string::npos) << why;
+  // The new type carries each node's position through the wire.
+  cppn_genome_t g = genome(2, 0);
+  g.nodes[1].position = 0.625;
+  const auto nb = encode_message(g);
+  ASSERT_TRUE(safe_decode(nb.data(), nb.size(), out, &why)) << why;
+  EXPECT_EQ(out.nodes[1].position, 0.625);
 }
 
 }  // namespace

@@ -17,10 +17,10 @@ GenomeLayout small_layout() {
 Genome base(int64_t id) {
   Genome g;
   g.id = id;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear},
-             {1, NodeKind::Input, Activation::Linear},
-             {2, NodeKind::Bias, Activation::Linear},
-             {3, NodeKind::Output, Activation::SignedSigmoid}};
+  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
+             {1, NodeKind::Input, Activation::Linear, 0.0},
+             {2, NodeKind::Bias, Activation::Linear, 0.0},
+             {3, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
   return g;
 }
 
@@ -94,6 +94,33 @@ TEST(Crossover, SameInnovationWithDifferentEndpointsIsAnInvariantViolation) {
   b.links[0].from = 1;
   Rng rng(1);
   EXPECT_THROW(crossover(a, 2.0, b, 1.0, rng), std::logic_error);
+}
+
+TEST(Crossover, ClassicNeatInheritsADisabledGeneDisabledThreeTimesInFour) {
+  // Gene 2 is disabled in a, gene 1 in b: matching genes disabled in either
+  // parent. With probability 0.75 each is inherited disabled, else enabled,
+  // whichever parent's copy was drawn; genes enabled in both stay enabled.
+  NeatParams p;
+  p.disabled_gene_probability = 0.75;
+  Rng rng(31);
+  const int n = 4000;
+  int disabled1 = 0, disabled2 = 0;
+  for (int k = 0; k < n; ++k) {
+    const Genome c = crossover(parent_a(), 2.0, parent_b(), 1.0, p, rng);
+    ASSERT_TRUE(c.links[0].enabled);
+    disabled1 += !c.links[1].enabled;
+    disabled2 += !c.links[2].enabled;
+    ASSERT_TRUE(c.links[3].enabled && c.links[4].enabled);
+  }
+  // Binomial(4000, 0.75): mean 3000, sd 27.4; +-5 sd.
+  EXPECT_NEAR(disabled1, 3000, 137);
+  EXPECT_NEAR(disabled2, 3000, 137);
+  // Probability 0 (HyperNEAT, the default): the drawn gene as it is, no extra draw.
+  Rng r1(32), r2(32);
+  const Genome plain = crossover(parent_a(), 2.0, parent_b(), 1.0, r1);
+  const Genome zero = crossover(parent_a(), 2.0, parent_b(), 1.0, NeatParams{}, r2);
+  EXPECT_EQ(plain, zero);
+  EXPECT_EQ(r1.state(), r2.state());
 }
 
 }  // namespace

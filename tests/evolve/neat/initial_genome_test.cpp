@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/evolve/neat/classic_params.hpp"
+
 #include <set>
 
 namespace robozoo {
@@ -9,10 +11,10 @@ namespace {
 
 TEST(InitialGenome, LinksEveryInputToEveryOutputWithSharedInnovations) {
   const GenomeLayout layout = robot_layout();
-  NeatParams p;
+  NeatParams p = classic_neat();
   Rng rng(3);
-  const Genome a = initial_genome(layout, 0, p, rng);
-  const Genome b = initial_genome(layout, 1, p, rng);
+  const Genome a = initial_genome(layout, 0, p, Regime::FeedForward, rng);
+  const Genome b = initial_genome(layout, 1, p, Regime::FeedForward, rng);
   validate_genome(a, layout);
   EXPECT_EQ(a.id, 0);
   EXPECT_EQ(b.id, 1);
@@ -38,7 +40,56 @@ TEST(InitialGenome, LinksEveryInputToEveryOutputWithSharedInnovations) {
   }
   EXPECT_EQ(pairs.size(), a.links.size());
   EXPECT_TRUE(weights_differ);
-  EXPECT_EQ(first_free_innovation(layout), 99);
+  // (9 inputs + 11 outputs) x 11 outputs innovations are reserved for start links.
+  EXPECT_EQ(first_free_innovation(layout), 220);
+}
+
+// HyperNEAT's createTopology with edge density 1: every node to every non-input
+// node that the regime allows. Counted by hand for the robot layout (9 inputs,
+// 11 outputs): feed-forward 9 x 11 = 99 input -> output links (output -> output
+// links join two nodes at position 1: not forward); recurrent 99 + 11 x 10 = 209
+// (self-loops are not allowed), 220 with self-loops.
+TEST(InitialGenome, HyperNeatStartLinksEverythingTheRegimeAllows) {
+  const GenomeLayout layout = robot_layout();
+  NeatParams p;
+  ASSERT_EQ(p.initial_links, InitialLinks::AllAllowed);
+  ASSERT_FALSE(p.self_loops);
+  Rng rng(5);
+  const Genome ff = initial_genome(layout, 0, p, Regime::FeedForward, rng);
+  const Genome rec = initial_genome(layout, 1, p, Regime::Recurrent, rng);
+  validate_genome(ff, layout);
+  validate_genome(rec, layout);
+  EXPECT_EQ(ff.links.size(), 99u);
+  EXPECT_EQ(rec.links.size(), 209u);
+  EXPECT_EQ(count_recurrent_links(ff), 0);
+  EXPECT_EQ(count_recurrent_links(rec), 110);
+  EXPECT_FALSE(has_cycle(ff));
+  EXPECT_TRUE(has_cycle(rec));
+  int output_to_output = 0;
+  std::set<std::pair<int, int>> pairs;
+  for (const auto& l : rec.links) {
+    EXPECT_NE(l.from, l.to) << "no self-loop";
+    EXPECT_GE(l.to, layout.num_inputs) << "no link into an input";
+    output_to_output += l.from >= layout.num_inputs;
+    pairs.insert({l.from, l.to});
+    EXPECT_EQ(l.innovation, initial_link_innovation(layout, l.from, l.to - layout.num_inputs));
+    EXPECT_LT(l.innovation, first_free_innovation(layout));
+  }
+  EXPECT_EQ(output_to_output, 110);
+  EXPECT_EQ(pairs.size(), 209u);
+  for (const auto& n : rec.nodes)
+    EXPECT_EQ(n.position, n.kind == NodeKind::Output ? 1.0 : 0.0) << "node " << n.id;
+  // Both regimes give an input -> output link the same innovation number.
+  for (size_t k = 0; k < ff.links.size(); ++k) {
+    EXPECT_EQ(ff.links[k].from, rec.links[k].from);
+    EXPECT_EQ(ff.links[k].innovation, rec.links[k].innovation);
+  }
+  p.self_loops = true;
+  EXPECT_EQ(initial_genome(layout, 2, p, Regime::Recurrent, rng).links.size(), 220u);
+  EXPECT_EQ(initial_genome(layout, 3, p, Regime::FeedForward, rng).links.size(), 99u);
+  // The third arm's start: recurrence allowed, the control's 99 links.
+  p.initial_links = InitialLinks::InputsToOutputs;
+  EXPECT_EQ(initial_genome(layout, 4, p, Regime::Recurrent, rng).links.size(), 99u);
 }
 
 TEST(InitialGenome, WeightsCoverTheirRange) {
@@ -46,11 +97,11 @@ TEST(InitialGenome, WeightsCoverTheirRange) {
   layout.num_inputs = 3;
   layout.bias_input = 2;
   layout.num_outputs = 1;
-  NeatParams p;
+  NeatParams p = classic_neat();
   Rng rng(11);
   double lo = 0, hi = 0;
   for (int i = 0; i < 300; ++i)
-    for (const auto& l : initial_genome(layout, i, p, rng).links) {
+    for (const auto& l : initial_genome(layout, i, p, Regime::FeedForward, rng).links) {
       lo = std::min(lo, l.weight);
       hi = std::max(hi, l.weight);
     }
@@ -61,9 +112,9 @@ TEST(InitialGenome, WeightsCoverTheirRange) {
 TEST(InitialGenome, RejectsEmptyLayouts) {
   GenomeLayout layout;
   layout.num_outputs = 0;
-  NeatParams p;
+  NeatParams p = classic_neat();
   Rng rng(1);
-  EXPECT_THROW(initial_genome(layout, 0, p, rng), std::invalid_argument);
+  EXPECT_THROW(initial_genome(layout, 0, p, Regime::FeedForward, rng), std::invalid_argument);
 }
 
 }  // namespace

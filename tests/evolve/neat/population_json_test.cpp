@@ -48,8 +48,8 @@ TEST(PopulationJson, WeightsRoundTripBitForBit) {
   }
   Genome g;
   g.id = 42;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear}, {1, NodeKind::Bias, Activation::Linear},
-             {2, NodeKind::Output, Activation::SignedSigmoid}, {3, NodeKind::Hidden, Activation::Gaussian},
+  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0}, {1, NodeKind::Bias, Activation::Linear, 0.0},
+             {2, NodeKind::Output, Activation::SignedSigmoid, 1.0}, {3, NodeKind::Hidden, Activation::Gaussian},
              {4, NodeKind::Hidden, Activation::SignedCosine}};
   for (size_t k = 0; k < values.size(); ++k)
     g.links.push_back({static_cast<int64_t>(k) * 3 + 1, static_cast<int32_t>(k % 5), 2 + static_cast<int32_t>(k % 3),
@@ -69,7 +69,7 @@ TEST(PopulationJson, WeightsRoundTripBitForBit) {
 TEST(PopulationJson, GenomeFormatIsReadable) {
   Genome g;
   g.id = 7;
-  g.nodes = {{0, NodeKind::Bias, Activation::Linear}, {1, NodeKind::Output, Activation::SignedSigmoid}};
+  g.nodes = {{0, NodeKind::Bias, Activation::Linear, 0.0}, {1, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
   g.links = {{0, 0, 1, 0.5, true, 3}};
   const json j = genome_to_json(g);
   EXPECT_EQ(j.at("id"), 7);
@@ -114,7 +114,7 @@ std::string error_of(const std::function<void()>& f) {
 TEST(PopulationJson, MalformedInputNamesThePath) {
   Genome g;
   g.id = 1;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear}, {1, NodeKind::Output, Activation::SignedSigmoid}};
+  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0}, {1, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
   g.links = {{0, 0, 1, 0.5, true, 0}, {1, 1, 1, -0.5, true, 0}};
   const json good = genome_to_json(g);
 

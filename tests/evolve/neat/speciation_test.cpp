@@ -87,11 +87,15 @@ TEST(AdjustThreshold, DrivesThePopulationTowardsTheTarget) {
   Rng rng(4);
   Population pop(p, Regime::FeedForward, xor_layout(), rng);
   EXPECT_EQ(pop.species().size(), 1u);
+  // Generation 0 was speciated with 6.0 (the threshold in force); the next one will use 5.7.
+  EXPECT_DOUBLE_EQ(pop.speciation_threshold(), 6.0);
   EXPECT_DOUBLE_EQ(pop.compatibility_threshold(), 6.0 - 0.3);
   double lowest = pop.compatibility_threshold();
   size_t most = 0;
   for (int g = 0; g < 30; ++g) {
+    const double next = pop.compatibility_threshold();
     pop.advance(xor_fitness(pop), rng);
+    EXPECT_DOUBLE_EQ(pop.speciation_threshold(), next) << "generation " << g + 1;
     lowest = std::min(lowest, pop.compatibility_threshold());
     most = std::max(most, pop.species().size());
   }

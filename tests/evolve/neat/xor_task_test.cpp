@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/evolve/neat/classic_params.hpp"
+
 #include <cmath>
 
 #include "evolve/neat/population.hpp"
@@ -12,10 +14,10 @@ namespace {
 Genome xor_base() {
   Genome g;
   g.id = 0;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear},
-             {1, NodeKind::Input, Activation::Linear},
-             {2, NodeKind::Bias, Activation::Linear},
-             {3, NodeKind::Output, Activation::SignedSigmoid}};
+  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
+             {1, NodeKind::Input, Activation::Linear, 0.0},
+             {2, NodeKind::Bias, Activation::Linear, 0.0},
+             {3, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
   return g;
 }
 
@@ -41,10 +43,10 @@ TEST(XorTask, HandMadeSolution) {
 
 TEST(XorTask, NoHiddenNodeNeverSolvesXor) {
   // One signed-sigmoid unit of x1, x2 and the bias is linearly separable only.
-  NeatParams p;
+  NeatParams p = classic_neat();
   Rng rng(1);
   for (int i = 0; i < 2000; ++i) {
-    Genome g = initial_genome(xor_layout(), i, p, rng);
+    Genome g = initial_genome(xor_layout(), i, p, Regime::FeedForward, rng);
     for (auto& l : g.links) l.weight = rng.uniform(-5, 5);
     const XorResult r = evaluate_xor(g);
     ASSERT_FALSE(r.solved);
@@ -62,7 +64,7 @@ TEST(XorTask, OutputsOfZeroNetInputScoreFour) {
 
 TEST(XorTask, NeatSolvesXorInBothRegimes) {
   for (Regime regime : {Regime::FeedForward, Regime::Recurrent}) {
-    NeatParams p;
+    NeatParams p = classic_neat();
     Rng rng(1);
     Population pop(p, regime, xor_layout(), rng);
     bool solved = false;

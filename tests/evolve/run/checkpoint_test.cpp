@@ -73,6 +73,16 @@ TEST(Checkpoint, MalformedFilesAreClearErrors) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("not a robozoo checkpoint"), std::string::npos);
   }
+  // A checkpoint of format 1 (before drawing positions) is refused with a clear message.
+  std::ofstream(dir / "v1") << "{\"format\": \"robozoo-checkpoint\", \"format_version\": 1}";
+  try {
+    read_checkpoint(dir / "v1");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("format version 1 is not the supported 2"), std::string::npos) << what;
+    EXPECT_NE(what.find("older robozoo"), std::string::npos) << what;
+  }
   write_checkpoint(dir / "c", sample());
   const std::string text = robozoo::testing::read_file(dir / "c");
   std::ofstream(dir / "cut") << text.substr(0, text.size() / 2);

@@ -1,4 +1,4 @@
-// Determinism of whole episodes (DESIGN.md section 4): a golden pose hash, the
+// Determinism of whole episodes (docs/method.md section 4): a golden pose hash, the
 // same hash again in one process, in two processes at once, and with two
 // simulations interleaved step by step in one thread.
 #include <gtest/gtest.h>

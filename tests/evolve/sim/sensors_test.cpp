@@ -13,9 +13,13 @@ namespace robozoo {
 namespace {
 
 TEST(Sensors, DistanceIsOneMinusDistanceOverRangeClamped) {
-  SimParams p;  // target (10, 0, 0), range 20
+  SimParams p;  // target (50, 0, 0), range 100
   EXPECT_DOUBLE_EQ(distance_sensor_value({0, 0, 0}, p), 0.5);
-  EXPECT_DOUBLE_EQ(distance_sensor_value({10, 0, 0}, p), 1.0);
+  EXPECT_DOUBLE_EQ(distance_sensor_value({50, 0, 0}, p), 1.0);
+  EXPECT_DOUBLE_EQ(distance_sensor_value({50, 3, 4}, p), 1.0 - 5.0 / 100.0);
+  EXPECT_DOUBLE_EQ(distance_sensor_value({-75, 0, 0}, p), 0.0);
+  p.target_x = 10;
+  p.distance_sensor_range = 20;
   EXPECT_DOUBLE_EQ(distance_sensor_value({10, 3, 4}, p), 1.0 - 5.0 / 20.0);
   EXPECT_DOUBLE_EQ(distance_sensor_value({-15, 0, 0}, p), 0.0);
   p.distance_sensor_range = 40;
@@ -37,9 +41,9 @@ TEST(Sensors, DistanceSensorReadsItsSpheresWorldCentre) {
   b.add_fused(a, {0.2, 0.3, 0}, 0.2, 1.0, kSensorDistance);
   const Robot r = b.build();
   Simulation sim(r, SimParams{});
-  const double d = (Eigen::Vector3d(0.2, 0.3, 0.2) - Eigen::Vector3d(10, 0, 0)).norm();
+  const double d = (Eigen::Vector3d(0.2, 0.3, 0.2) - Eigen::Vector3d(50, 0, 0)).norm();
   ASSERT_EQ(sim.state().sensor_value.size(), 1u);
-  EXPECT_NEAR(sim.state().sensor_value[0], 1.0 - d / 20.0, 1e-14);
+  EXPECT_NEAR(sim.state().sensor_value[0], 1.0 - d / 100.0, 1e-14);
 }
 
 TEST(Sensors, TimeSensorFollowsSimulatedTime) {

@@ -1,0 +1,38 @@
+#pragma once
+// The two parameter sets robozoo-xor checks NEAT with on XOR:
+// - "default": the project's CPPN-NEAT as robots use it (HyperNEAT's defaults
+//   and topology rules), signed-sigmoid output;
+// - "neat-paper": the NEAT paper's own XOR settings (Stanley & Miikkulainen
+//   2002, section 4): steepened sigmoid 1/(1+e^(-4.9x)) everywhere, c1 = c2 = 1,
+//   c3 = 0.4, a fixed threshold of 3.0, classic add-node (the split link is
+//   disabled), a gene disabled in either parent inherited disabled with
+//   probability 0.75, interspecies mating 0.001, weight mutation of every link
+//   (90 % perturbed, 10 % replaced), and the classic topology: a
+//   start of inputs-to-outputs links, the cycle test, add-link by tries,
+//   classic excess/disjoint counting.
+// Everything the NEAT paper does not give keeps the project's default.
+#include <string>
+#include <vector>
+
+#include "evolve/cppn/genome.hpp"
+#include "evolve/neat/params.hpp"
+
+namespace robozoo {
+
+struct XorPreset {
+  std::string name;
+  NeatParams params;
+  GenomeLayout layout;
+  /// The hidden activation mask of "sigmoid only" for this preset (signed
+  /// sigmoid, or the steepened sigmoid of the NEAT paper).
+  uint32_t sigmoid_only = 0;
+  /// The mask of "all three": the preset's sigmoid, signed cosine and Gaussian.
+  uint32_t all_three = 0;
+};
+
+/// Names of the presets ("default", "neat-paper").
+std::vector<std::string> xor_preset_names();
+/// The preset of that name; throws std::invalid_argument for an unknown one.
+XorPreset xor_preset(const std::string& name);
+
+}  // namespace robozoo
