@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "render/log_source.hpp"
-#include "render/selection.hpp"
+#include "runlog/log_source.hpp"
+#include "runlog/selection.hpp"
 #include "render/video_subject.hpp"
 
 namespace robozoo::render {

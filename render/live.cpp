@@ -8,9 +8,9 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "evolve/io/bus.hpp"
-#include "render/message_collector.hpp"
+#include "runlog/message_collector.hpp"
 #include "render/render_worker.hpp"
-#include "render/trajectory.hpp"
+#include "runlog/trajectory.hpp"
 #include "render/video_subject.hpp"
 
 namespace robozoo::render {

@@ -19,14 +19,15 @@ extern "C" {
 #include "evolve/io/bus.hpp"
 #include "render/bench.hpp"
 #include "render/live.hpp"
-#include "render/log_source.hpp"
+#include "runlog/log_source.hpp"
 #include "render/png_io.hpp"
-#include "render/progress_bar.hpp"
-#include "render/selection.hpp"
+#include "runlog/progress_bar.hpp"
+#include "runlog/selection.hpp"
 #include "render/video_subject.hpp"
 #include "render/zoo_sheet.hpp"
 #include "evolve/core/version.hpp"
 
+using namespace robozoo;
 using namespace robozoo::render;
 
 namespace {
@@ -198,9 +199,11 @@ int run_video(const VideoCmdArgs& a) {
     if (p.genome->genome.fitness > pick.genome->genome.fitness) pick = p;
   VideoSubject subject = make_video_subject(*pick.run, *pick.genome, a.resimulate);
   const bool tty = ::isatty(2) && !a.quiet;
-  ProgressBar bar("rendering", video_frame_count(subject.trajectory.end_time() - subject.trajectory.start_time(), o),
-                  tty);
-  const VideoStats s = render_video(subject, o, a.out, [&](int done, int) { bar.update(done); });
+  const int frames = video_frame_count(subject.trajectory.end_time() - subject.trajectory.start_time(), o);
+  ProgressBar bar(std::cerr, "rendering");
+  const VideoStats s = render_video(subject, o, a.out, [&](int done, int) {
+    if (tty) bar.update(done, frames);
+  });
   bar.finish();
   if (!a.quiet)
     std::fprintf(stderr,

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/robot_shape.hpp"
-#include "render/run_record.hpp"
+#include "runlog/run_record.hpp"
 
 namespace robozoo::render {
 

@@ -3,16 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "render/message_collector.hpp"
+#include "runlog/message_collector.hpp"
 
 namespace robozoo::render {
-
-std::vector<bool> leaf_spheres(const morphology_t& m) {
-  std::vector<bool> leaf(m.spheres.size(), true);
-  for (const sphere_t& s : m.spheres)
-    if (s.parent >= 0 && static_cast<size_t>(s.parent) < leaf.size()) leaf[static_cast<size_t>(s.parent)] = false;
-  return leaf;
-}
 
 std::vector<SphereDraw> RobotShape::at(const std::vector<Eigen::Vector3d>& centers) const {
   if (centers.size() != radius.size())

@@ -10,12 +10,9 @@
 #include "render/scene.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
+#include "runlog/leaf_spheres.hpp"
 
 namespace robozoo::render {
-
-/// Leaf spheres: those no other sphere names as its parent. A robot that is
-/// just its root has one leaf.
-std::vector<bool> leaf_spheres(const morphology_t& m);
 
 struct RobotShape {
   std::vector<double> radius;  ///< per sphere (m)

@@ -13,7 +13,7 @@
 #include "render/robot_card.hpp"
 #include "render/stage.hpp"
 #include "render/text.hpp"
-#include "render/trajectory.hpp"
+#include "runlog/trajectory.hpp"
 #include "render/video_encoder.hpp"
 
 namespace robozoo::render {

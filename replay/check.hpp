@@ -7,7 +7,7 @@
 #include <string>
 
 #include "replay/check_report.hpp"
-#include "replay/log_reader.hpp"
+#include "runlog/log_reader.hpp"
 
 namespace robozoo {
 

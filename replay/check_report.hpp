@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "replay/champion_check.hpp"
-#include "replay/log_index.hpp"
+#include "runlog/log_index.hpp"
 
 namespace robozoo {
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "evolve/io/event_log.hpp"
-#include "replay/log_index.hpp"
+#include "runlog/log_index.hpp"
 #include "replay/play_clock.hpp"
 
 namespace robozoo {

@@ -11,8 +11,8 @@
 #include "replay/check.hpp"
 #include "replay/live_sim.hpp"
 #include "replay/player.hpp"
-#include "replay/progress_bar.hpp"
 #include "evolve/core/version.hpp"
+#include "runlog/progress_bar.hpp"
 
 namespace {
 

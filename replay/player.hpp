@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "evolve/io/event_log.hpp"
-#include "replay/log_index.hpp"
+#include "runlog/log_index.hpp"
 #include "replay/play_clock.hpp"
 
 namespace robozoo {

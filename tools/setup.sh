@@ -10,10 +10,12 @@ PACKAGES=(
   libosmesa6-dev libglu1-mesa-dev libpng-dev
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev ffmpeg
   libfreetype-dev fonts-dejavu-core
-  libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libboost-math-dev
+  libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libboost-math-dev libboost-dev
+  libjs-three chromium
   libgtest-dev gnuplot-nox
   openmpi-bin libopenmpi-dev
   iproute2 util-linux
+  clang libclang-rt-14-dev   # libFuzzer and clang's sanitizer runtimes (tools/fuzz.sh)
 )
 
 missing=()

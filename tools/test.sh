@@ -1,8 +1,42 @@
 #!/usr/bin/env bash
-# The README's test command: install what is missing, build, run every test.
+# The README's test command: install what is missing, build, run every test,
+# then run every fuzz target for 10 s (tools/fuzz.sh).
+#
+#   tools/test.sh              # build/ and ctest, then the fuzz targets (CI)
+#   tools/test.sh --no-fuzz    # build/ and ctest only
+#   tools/test.sh --sanitize   # the whole suite under AddressSanitizer and
+#                              # UndefinedBehaviorSanitizer, in build-sanitize/
 set -euo pipefail
 cd "$(dirname "$0")/.."
+mode="${1:-}"
+case "$mode" in
+  ""|--no-fuzz|--sanitize) ;;
+  -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+  *) echo "test.sh: unknown option $mode (use --no-fuzz or --sanitize)" >&2; exit 2 ;;
+esac
 tools/setup.sh
+
+if [ "$mode" = "--sanitize" ]; then
+  dir="${SANITIZE_BUILD_DIR:-build-sanitize}"
+  flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+  launcher=()
+  command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # -O1 (asserts on): quicker to build than -O3, and what the sanitizers' authors advise.
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_C_FLAGS_RELEASE=-O1 -DCMAKE_CXX_FLAGS_RELEASE=-O1 \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" "${launcher[@]}" >/dev/null
+  cmake --build "$dir" -j"${JOBS:-$(nproc)}"
+  # Leaks inside Open MPI, OSMesa and the other libraries robozoo links are theirs (tools/lsan.supp).
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1"
+  export LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp:print_suppressions=0"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  cd "$dir"
+  ctest --output-on-failure -j"${JOBS:-$(nproc)}"
+  exit 0
+fi
+
 tools/build.sh
-cd "${BUILD_DIR:-build}"
-ctest --output-on-failure -j"$(nproc)"
+(cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j"$(nproc)")
+if [ "$mode" != "--no-fuzz" ]; then
+  tools/fuzz.sh 10
+fi

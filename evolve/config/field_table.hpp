@@ -17,6 +17,17 @@ struct ConfigError;  // run_config.hpp
 
 [[noreturn]] void throw_config_error(const std::string& message);
 
+/// A value as an error message shows it: a number, true/false or a string
+/// (cut after 60 characters) as written; an array or object by its size only,
+/// since writing out a deeply nested one recurses as deep as it nests.
+inline std::string shown(const nlohmann::json& v) {
+  if (v.is_array()) return "an array of " + std::to_string(v.size()) + " values";
+  if (v.is_object()) return "an object of " + std::to_string(v.size()) + " keys";
+  std::string s = v.dump();
+  if (s.size() > 60) s = s.substr(0, 60) + "...";
+  return s;
+}
+
 template <class S>
 class FieldTable {
  public:
@@ -30,13 +41,13 @@ class FieldTable {
     fields_[name] = {
         [m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
         [q = qualified(name), m, lo, hi, lo_open, hi_open](S& s, const nlohmann::json& v) {
-          if (!v.is_number()) fail(q, "must be a number, got " + v.dump());
+          if (!v.is_number()) fail(q, "must be a number, got " + shown(v));
           const double x = v.get<double>();
           const bool below = lo_open ? !(x > lo) : !(x >= lo);
           const bool above = hi_open ? !(x < hi) : !(x <= hi);
           if (!std::isfinite(x) || below || above)
             fail(q, "must be in " + std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) +
-                           (hi_open ? ")" : "]") + ", got " + v.dump());
+                           (hi_open ? ")" : "]") + ", got " + shown(v));
           s.*m = x;
         }};
     return *this;
@@ -47,10 +58,10 @@ class FieldTable {
     fields_[name] = {
         [m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
         [q = qualified(name), m, lo, hi](S& s, const nlohmann::json& v) {
-          if (!v.is_number_integer()) fail(q, "must be an integer, got " + v.dump());
+          if (!v.is_number_integer()) fail(q, "must be an integer, got " + shown(v));
           const long long x = v.get<long long>();
           if (x < lo || x > hi)
-            fail(q, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v.dump());
+            fail(q, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + shown(v));
           s.*m = static_cast<I>(x);
         }};
     return *this;
@@ -59,7 +70,7 @@ class FieldTable {
     fields_[name] = {
         [m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
         [q = qualified(name), m](S& s, const nlohmann::json& v) {
-          if (!v.is_boolean()) fail(q, "must be true or false, got " + v.dump());
+          if (!v.is_boolean()) fail(q, "must be true or false, got " + shown(v));
           s.*m = v.get<bool>();
         }};
     return *this;
@@ -72,7 +83,7 @@ class FieldTable {
     return custom(
         name, [m, name_of](const S& s) { return nlohmann::json(name_of(s.*m)); },
         [m, from_name](S& s, const nlohmann::json& v, const std::string& q) {
-          if (!v.is_string()) fail(q, "must be a name, got " + v.dump());
+          if (!v.is_string()) fail(q, "must be a name, got " + shown(v));
           try {
             s.*m = from_name(v.get<std::string>());
           } catch (const std::invalid_argument& e) {
@@ -97,7 +108,7 @@ class FieldTable {
     return j;
   }
   void read(S& s, const nlohmann::json& j) const {
-    if (!j.is_object()) throw_config_error(section_ + ": must be a table/object, got " + j.dump());
+    if (!j.is_object()) throw_config_error(section_ + ": must be a table/object, got " + shown(j));
     for (const auto& [key, value] : j.items()) {
       auto it = fields_.find(key);
       if (it == fields_.end()) throw_config_error(qualified(key) + ": unknown key");

@@ -61,10 +61,10 @@ FieldTable<NeatParams> neat_table() {
           },
           [](NeatParams& p, const nlohmann::json& v, const std::string& q) {
             if (!v.is_array() || v.empty())
-              throw_config_error(q + ": must be a non-empty list of activation names, got " + v.dump());
+              throw_config_error(q + ": must be a non-empty list of activation names, got " + shown(v));
             uint32_t mask = 0;
             for (const auto& e : v) {
-              if (!e.is_string()) throw_config_error(q + ": must list names, got " + e.dump());
+              if (!e.is_string()) throw_config_error(q + ": must list names, got " + shown(e));
               try {
                 mask |= 1u << static_cast<int>(activation_from_name(e.get<std::string>()));
               } catch (const std::invalid_argument& err) {
@@ -140,7 +140,7 @@ FieldTable<RunConfig> top_table() {
   t.custom(
        "regime", [](const RunConfig& c) { return nlohmann::json(regime_name(c.regime)); },
        [](RunConfig& c, const nlohmann::json& v, const std::string& q) {
-         if (!v.is_string()) throw_config_error(q + ": must be \"feedforward\" or \"recurrent\", got " + v.dump());
+         if (!v.is_string()) throw_config_error(q + ": must be \"feedforward\" or \"recurrent\", got " + shown(v));
          try {
            c.regime = regime_from_name(v.get<std::string>());
          } catch (const ConfigError& e) {
@@ -155,7 +155,7 @@ FieldTable<RunConfig> top_table() {
       .custom("cppn_updates", [](const RunConfig& c) { return nlohmann::json(c.eval.cppn_updates); },
               [](RunConfig& c, const nlohmann::json& v, const std::string& q) {
                 if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000)
-                  throw_config_error(q + ": must be an integer in [1, 1000], got " + v.dump());
+                  throw_config_error(q + ": must be an integer in [1, 1000], got " + shown(v));
                 c.eval.cppn_updates = v.get<int>();
               })
       .custom("neat", [](const RunConfig& c) { return neat_table().write(c.neat); },
@@ -238,34 +238,37 @@ void validate_config(const RunConfig& c) {
     throw ConfigError("neat.min_compatibility_threshold: must not exceed neat.compatibility_threshold");
 }
 
-RunConfig load_config_file(const std::string& path, RunConfig base) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot read configuration file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+RunConfig config_from_text(const std::string& text, ConfigFormat format, const std::string& name, RunConfig base) {
   nlohmann::json j;
-  const bool is_toml = path.size() >= 5 && path.compare(path.size() - 5, 5, ".toml") == 0;
-  if (is_toml) {
+  if (format == ConfigFormat::Toml) {
     try {
-      j = toml_to_json(toml::parse(text, path), path);
+      j = toml_to_json(toml::parse(text, name), name);
     } catch (const toml::parse_error& e) {
       std::ostringstream os;
-      os << path << ":" << e.source().begin.line << ": " << e.description();
+      os << name << ":" << e.source().begin.line << ": " << e.description();
       throw ConfigError(os.str());
     }
   } else {
     try {
       j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw ConfigError(path + ": not valid JSON (" + e.what() + ")");
+    } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers beyond a double (out_of_range)
+      throw ConfigError(name + ": not valid JSON (" + e.what() + ")");
     }
   }
   try {
     return config_from_json(j, base);
   } catch (const ConfigError& e) {
-    throw ConfigError(path + ": " + e.what());
+    throw ConfigError(name + ": " + e.what());
   }
+}
+
+RunConfig load_config_file(const std::string& path, RunConfig base) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot read configuration file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const bool is_toml = path.size() >= 5 && path.compare(path.size() - 5, 5, ".toml") == 0;
+  return config_from_text(ss.str(), is_toml ? ConfigFormat::Toml : ConfigFormat::Json, path, base);
 }
 
 }  // namespace robozoo

@@ -35,6 +35,10 @@ RunConfig config_from_json(const nlohmann::json& j, RunConfig base = RunConfig{}
 /// Reads a JSON (.json) or TOML (.toml) file and overlays it onto `base`.
 /// Throws ConfigError for an unreadable or malformed file, naming the file.
 RunConfig load_config_file(const std::string& path, RunConfig base = RunConfig{});
+enum class ConfigFormat { Json, Toml };
+/// The same on the text of a file; `name` prefixes error messages.
+RunConfig config_from_text(const std::string& text, ConfigFormat format, const std::string& name,
+                           RunConfig base = RunConfig{});
 /// One "KEY=VALUE" assignment (robozoo-evolve --set) as the JSON object to
 /// overlay: a dotted KEY names nested sections ("neat.initial_links"); VALUE is
 /// read as JSON (numbers, true/false, quoted strings) and otherwise taken as a

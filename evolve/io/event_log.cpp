@@ -1,5 +1,7 @@
 #include "evolve/io/event_log.hpp"
 
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -76,34 +78,107 @@ int64_t EventLogWriter::events() const { return log_->eventcount; }
 
 namespace {
 // An LCM log event's header: sync word, event number, timestamp, channel and
-// data lengths (bytes).
+// data lengths (bytes), big-endian.
 constexpr int64_t kEventHeaderBytes = 4 + 8 + 8 + 4 + 4;
+constexpr uint32_t kSyncWord = 0xEDA1DA01;
+constexpr int32_t kMaxChannelBytes = 999;  // LCM's limit
+
+uint64_t big_endian(const uint8_t* p, int n) {
+  uint64_t v = 0;
+  for (int i = 0; i < n; ++i) v = (v << 8) | p[i];
+  return v;
+}
+
+// The file mapped read-only (nothing mapped for an empty file).
+class MappedFile {
+ public:
+  explicit MappedFile(const std::string& path) {
+    errno = 0;
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0) throw io_error(path, "cannot open the event log");
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0) {
+      ::close(fd_);
+      throw io_error(path, "cannot open the event log");
+    }
+    if (!S_ISREG(st.st_mode)) {
+      ::close(fd_);
+      errno = 0;
+      throw io_error(path, "not a regular file");
+    }
+    len_ = static_cast<size_t>(st.st_size);
+    if (len_ > 0) {
+      void* p = ::mmap(nullptr, len_, PROT_READ, MAP_PRIVATE, fd_, 0);
+      if (p == MAP_FAILED) {
+        ::close(fd_);
+        throw io_error(path, "cannot read the event log");
+      }
+      data_ = static_cast<const uint8_t*>(p);
+    }
+  }
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  ~MappedFile() {
+    if (data_) ::munmap(const_cast<uint8_t*>(data_), len_);
+    ::close(fd_);
+  }
+  const uint8_t* data() const { return data_; }
+  size_t size() const { return len_; }
+
+ private:
+  int fd_ = -1;
+  const uint8_t* data_ = nullptr;
+  size_t len_ = 0;
+};
 }  // namespace
 
-LogContents read_event_log(const std::string& path) {
-  struct stat st {};
-  errno = 0;
-  if (::stat(path.c_str(), &st) != 0) throw io_error(path, "cannot open the event log");
-  lcm_eventlog_t* log = lcm_eventlog_create(path.c_str(), "r");
-  if (!log) throw io_error(path, "cannot open the event log");
+LogContents parse_event_log(const uint8_t* data, size_t len) {
   LogContents out;
-  out.file_bytes = st.st_size;
-  while (lcm_eventlog_event_t* ev = lcm_eventlog_read_next_event(log)) {
-    LogRecord r;
-    r.eventnum = ev->eventnum;
-    r.timestamp = ev->timestamp;
-    r.channel.assign(ev->channel, static_cast<size_t>(ev->channellen));
-    const auto* d = static_cast<const uint8_t*>(ev->data);
-    r.data.assign(d, d + ev->datalen);
-    out.event_bytes += kEventHeaderBytes + static_cast<int64_t>(r.channel.size()) + static_cast<int64_t>(r.data.size());
-    out.records.push_back(std::move(r));
-    lcm_eventlog_free_event(ev);
+  out.file_bytes = static_cast<int64_t>(len);
+  const int64_t n = static_cast<int64_t>(len);
+  int64_t pos = 0;
+  // Like LCM's reader, look for the first sync word; after that, every event
+  // must start right where the previous one ended.
+  uint32_t window = 0;
+  while (pos < n) {
+    window = (window << 8) | data[pos++];
+    if (window == kSyncWord) break;
   }
-  // LCM's reader stops at a cut last event with the file position at its end,
-  // so the position cannot tell; the bytes the complete events take can.
-  out.truncated = out.event_bytes != static_cast<int64_t>(st.st_size);
-  lcm_eventlog_destroy(log);
+  if (window != kSyncWord) {
+    out.truncated = out.file_bytes != 0;
+    return out;
+  }
+  pos -= 4;
+  while (pos + kEventHeaderBytes <= n && big_endian(data + pos, 4) == kSyncWord) {
+    const uint8_t* h = data + pos + 4;
+    const auto eventnum = static_cast<int64_t>(big_endian(h, 8));
+    const auto timestamp = static_cast<int64_t>(big_endian(h + 8, 8));
+    const auto channellen = static_cast<int32_t>(big_endian(h + 16, 4));
+    const auto datalen = static_cast<int32_t>(big_endian(h + 20, 4));
+    if (channellen < 1 || channellen > kMaxChannelBytes || datalen < 0) break;
+    const int64_t left = n - pos - kEventHeaderBytes;
+    if (int64_t(channellen) + int64_t(datalen) > left) break;  // cut: checked before allocating
+    const int64_t end = pos + kEventHeaderBytes + channellen + datalen;
+    // LCM's reader drops an event not followed by the next sync word (when
+    // four more bytes are there to tell).
+    if (end + 4 <= n && big_endian(data + end, 4) != kSyncWord) break;
+    LogRecord r;
+    r.eventnum = eventnum;
+    r.timestamp = timestamp;
+    const uint8_t* c = data + pos + kEventHeaderBytes;
+    r.channel.assign(reinterpret_cast<const char*>(c), static_cast<size_t>(channellen));
+    r.data.assign(c + channellen, c + channellen + datalen);
+    out.event_bytes += end - pos;
+    out.records.push_back(std::move(r));
+    pos = end;
+  }
+  out.truncated = out.event_bytes != out.file_bytes;
   return out;
+}
+
+LogContents read_event_log(const std::string& path) {
+  MappedFile f(path);
+  return parse_event_log(f.data(), f.size());
 }
 
 int64_t now_us() {

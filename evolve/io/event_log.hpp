@@ -50,7 +50,12 @@ struct LogRecord {
 };
 
 /// Reads the complete events of a log, from the start up to the first cut or
-/// damaged event (LCM 1.3.1's reader does not look for the next sync word).
+/// damaged event, as LCM 1.3.1's reader does (bytes before the first sync word
+/// are skipped; an event must be followed by the next sync word or the end of
+/// the file; channel names are 1 to 999 bytes), but with every length checked
+/// against the bytes left before anything is allocated: LCM's own reader
+/// allocates whatever a damaged length field says (up to 2 GiB) and writes
+/// through a null pointer when that allocation fails.
 /// Throws std::runtime_error naming the path if it cannot be opened.
 /// `truncated` says the events read do not account for every byte of the file:
 /// it ends inside an event, or holds bytes that are not events. (robozoo-replay
@@ -62,6 +67,8 @@ struct LogContents {
   int64_t event_bytes = 0;  ///< bytes the complete events take, headers included
 };
 LogContents read_event_log(const std::string& path);
+/// The same reader on the bytes of a log already in memory.
+LogContents parse_event_log(const uint8_t* data, size_t len);
 
 /// Current time in microseconds since the Unix epoch (for utime fields).
 int64_t now_us();

@@ -1,5 +1,6 @@
 #include "evolve/messages/safe_decode.hpp"
 
+#include <cstring>
 #include <vector>
 
 namespace robozoo {
@@ -28,11 +29,21 @@ class Walker {
     pos_ += n;
     return true;
   }
+  // An LCM string: its length with the terminating zero byte, its bytes, the
+  // zero. LCM's decoder keeps any bytes (it never looks at the terminator) but
+  // its encoder writes the string up to its first zero byte, so a string with
+  // a zero inside or without its terminator would not survive re-encoding:
+  // two different messages would normalise to the same bytes.
   bool str(const char* what) {
     int32_t n;
     if (!i32(n, what)) return false;
     if (n < 1) return fail(std::string(what) + ": bad string length");
-    return skip(n, what);
+    if (!need(n, what)) return false;
+    if (d_[pos_ + n - 1] != 0) return fail(std::string(what) + ": string without its terminating zero byte");
+    if (std::memchr(d_ + pos_, 0, static_cast<size_t>(n - 1)))
+      return fail(std::string(what) + ": zero byte inside the string");
+    pos_ += n;
+    return true;
   }
   bool count(int32_t& n, const char* what) {
     if (!i32(n, what)) return false;

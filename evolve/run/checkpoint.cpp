@@ -83,8 +83,12 @@ Checkpoint read_checkpoint(const std::string& path) {
   if (!in) throw std::runtime_error(path + ": cannot read the checkpoint");
   std::stringstream ss;
   ss << in.rdbuf();
+  return checkpoint_from_text(ss.str(), path);
+}
+
+Checkpoint checkpoint_from_text(const std::string& text, const std::string& path) {
   try {
-    const auto j = nlohmann::json::parse(ss.str());
+    const auto j = nlohmann::json::parse(text);
     if (j.value("format", "") != "robozoo-checkpoint")
       throw std::runtime_error("not a robozoo checkpoint");
     if (j.at("format_version").get<int>() != Checkpoint::kFormatVersion)

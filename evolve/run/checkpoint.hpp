@@ -33,6 +33,8 @@ struct Checkpoint {
 void write_checkpoint(const std::string& path, const Checkpoint& c);
 /// Throws std::runtime_error naming the path for a missing, unreadable or malformed file.
 Checkpoint read_checkpoint(const std::string& path);
+/// The same on a checkpoint's text; `path` names it in error messages.
+Checkpoint checkpoint_from_text(const std::string& text, const std::string& path);
 
 /// Writes `text` to `path` atomically (temporary file in the same folder, fsync, rename, fsync folder).
 void write_file_atomic(const std::string& path, const std::string& text);

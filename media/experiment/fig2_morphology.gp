@@ -2,53 +2,65 @@ set terminal pngcairo enhanced size 1500,1050 font "DejaVu Sans,11"
 set output "fig2_morphology.png"
 $p0 << EOD
 0 50 0
-1 45.8 4.2
+1 42.2 4.046397575
 EOD
 $p1 << EOD
-0 24.3 1.850225212
-1 23.8 2.619584361
+0 26.9 1.741327718
+1 24.7 3.58716849
 EOD
 $p2 << EOD
-0 5.2 1.691810339
-1 4 0.6146362972
+0 5.5 1.661659144
+1 2.9 0.5259911279
 EOD
 $p3 << EOD
-0 30.5 6.436441391
-1 24.3 5.682429058
+0 36.3 5.389392874
+1 9.7 2.394670007
 EOD
 $p4 << EOD
-0 31.3 6.665083145
-1 12.7 6.241527591
+0 18.8 5.915704147
+1 13.2 3.823320256
 EOD
 $p5 << EOD
-0 1.8 1.263153021
-1 0.7 0.3958114029
+0 72.6 10.77878575
+1 23.4952381 4.702230324
 EOD
 $p6 << EOD
-0 28.9 6.967304596
-1 21.2 6.975831293
+0 37.6 11.83140829
+1 31.20952381 7.287578694
 EOD
 $p7 << EOD
-0 0.1964348475 0.04974178435
-1 0.1712569291 0.04005969664
+0 100 0
+1 70 15.27525232
 EOD
 $p8 << EOD
-0 0.01230701939 0.003618665029
-1 0.01301375426 0.003992821965
+0 1 0.557773351
+1 1.8 0.6960204339
 EOD
 $p9 << EOD
-0 18.1 2.013565108
-1 15.7 1.838175424
+0 30.2 6.306610289
+1 24.4 4.681405297
 EOD
 $p10 << EOD
-0 30.3 4.115148168
-1 21.4 3.688420318
+0 0.1808465881 0.03311660536
+1 0.1034205238 0.01379131031
 EOD
 $p11 << EOD
-0 60.6 8.230296336
-1 49.1 7.140572651
+0 0.01818026041 0.004309735133
+1 0.01081691126 0.003882405728
 EOD
-set multiplot layout 3,4 title "Figure 2: best-of-run robots (mean ± 1 s.e.; white feed-forward, red recurrent)"
+$p12 << EOD
+0 15.6 1.886796226
+1 13 2.357022604
+EOD
+$p13 << EOD
+0 23.7 3.627211969
+1 13.4 2.300724524
+EOD
+$p14 << EOD
+0 47.4 7.254423938
+1 33.8 5.882145628
+EOD
+set multiplot layout 4,4 title "Figure 2: best-of-run robots (mean ± 1 s.e.; white feed-forward, red recurrent)"
 set style fill solid 1.0 border rgb "black"
 set boxwidth 0.6
 set xrange [-0.6:1.6]
@@ -56,65 +68,80 @@ set xtics ("feed-forward" 0, "recurrent" 1) scale 0
 set grid ytics
 set key off
 set offsets 0, 0, graph 0.1, 0
-set title "spheres\nn = 10 / 10, p = 0.3306" font ",10"
+set title "spheres\nn = 10 / 10, p = 0.0698" font ",10"
 set yrange [0:*]
 plot $p0 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p0 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p0 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "leaves\nn = 10 / 10, p = 0.8778" font ",10"
+set title "leaves\nn = 10 / 10, p = 0.5879" font ",10"
 set yrange [0:*]
 plot $p1 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p1 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p1 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "joints\nn = 10 / 10, p = 0.5134" font ",10"
+set title "joints\nn = 10 / 10, p = 0.1531" font ",10"
 set yrange [0:*]
 plot $p2 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p2 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p2 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "distance sensors\nn = 10 / 10, p = 0.4795" font ",10"
+set title "distance sensors\nn = 10 / 10, p = 0.0003  ***" font ",10"
 set yrange [0:*]
 plot $p3 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p3 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p3 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "touch sensors\nn = 10 / 10, p = 0.0566" font ",10"
+set title "touch sensors\nn = 10 / 10, p = 0.4369" font ",10"
 set yrange [0:*]
 plot $p4 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p4 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p4 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "proprioceptive sensors\nn = 10 / 10, p = 0.4169" font ",10"
+set title "share of a robot's spheres with a distance\nsensor (%)\nn = 10 / 10, p = 0.0006  ***" font ",10"
 set yrange [0:*]
 plot $p5 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p5 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p5 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "time sensors\nn = 10 / 10, p = 0.445" font ",10"
+set title "share of a robot's spheres with a touch sensor\n(%)\nn = 10 / 10, p = 0.6511" font ",10"
 set yrange [0:*]
 plot $p6 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p6 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p6 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "mean radius (m)\nn = 10 / 10, p = 0.698" font ",10"
+set title "best-of-run robots that hit max_spheres\n(share) (%)\nn = 10 / 10, p = 0.0652" font ",10"
 set yrange [0:*]
 plot $p7 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p7 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p7 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "radius variance within a robot (m^2)\nn = 10 / 10, p = 0.8971" font ",10"
+set title "proprioceptive sensors\nn = 10 / 10, p = 0.3816" font ",10"
 set yrange [0:*]
 plot $p8 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p8 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p8 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "maximum depth from the root\nn = 10 / 10, p = 0.3903" font ",10"
+set title "time sensors\nn = 10 / 10, p = 0.4698" font ",10"
 set yrange [0:*]
 plot $p9 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p9 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p9 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "spheres that touched the ground\nn = 10 / 10, p = 0.1247" font ",10"
+set title "mean radius (m)\nn = 10 / 10, p = 0.0447  *" font ",10"
 set yrange [0:*]
 plot $p10 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p10 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p10 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
-set title "fraction of spheres that touched the ground\n(%)\nn = 10 / 10, p = 0.3052" font ",10"
+set title "radius variance within a robot (m^2)\nn = 10 / 10, p = 0.2205" font ",10"
 set yrange [0:*]
 plot $p11 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
      $p11 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
      $p11 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "maximum depth from the root\nn = 10 / 10, p = 0.4005" font ",10"
+set yrange [0:*]
+plot $p12 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p12 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p12 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "spheres that touched the ground\nn = 10 / 10, p = 0.0275  *" font ",10"
+set yrange [0:*]
+plot $p13 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p13 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p13 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "fraction of spheres that touched the ground\n(%)\nn = 10 / 10, p = 0.1626" font ",10"
+set yrange [0:*]
+plot $p14 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p14 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p14 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
 unset multiplot
 unset output

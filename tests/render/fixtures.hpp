@@ -10,7 +10,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
-#include "render/run_record.hpp"
+#include "runlog/run_record.hpp"
 
 namespace robozoo::render::testing {
 

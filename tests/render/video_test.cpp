@@ -6,8 +6,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "render/log_source.hpp"
-#include "render/selection.hpp"
+#include "runlog/log_source.hpp"
+#include "runlog/selection.hpp"
 #include "render/video_subject.hpp"
 #include "tests/render/decode_video.hpp"
 #include "tests/render/fixtures.hpp"

@@ -104,6 +104,49 @@ TEST(RunConfig, BadFilesNameTheFile) {
   for (const auto& p : {bad, badtoml, unknown}) std::remove(p.c_str());
 }
 
+std::string text_error(const std::string& text, ConfigFormat format) {
+  try {
+    config_from_text(text, format, "cfg");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// TOML has nan and inf literals, and JSON numbers can overflow a double: no
+// non-finite value may reach the configuration (checked by fuzz/fuzz_config_*).
+TEST(RunConfig, NanAndInfinityAreRefusedNamingTheKey) {
+  for (const char* v : {"nan", "+nan", "-nan", "inf", "+inf", "-inf"}) {
+    const std::string e = text_error(std::string("[sim]\ndt = ") + v + "\n", ConfigFormat::Toml);
+    EXPECT_NE(e.find("cfg: sim.dt: must be in"), std::string::npos) << v << ": " << e;
+  }
+  EXPECT_NE(text_error("[growth]\nr_max = nan\n", ConfigFormat::Toml).find("growth.r_max"), std::string::npos);
+  EXPECT_NE(text_error("[neat]\npopulation = inf\n", ConfigFormat::Toml).find("neat.population: must be an integer"),
+            std::string::npos);
+  const std::string big = text_error(R"({"sim": {"dt": 1e999}})", ConfigFormat::Json);
+  EXPECT_NE(big, "");
+  EXPECT_NE(big.find("cfg"), std::string::npos) << big;
+}
+
+TEST(RunConfig, AbsurdSizesAreRefusedNamingTheKey) {
+  EXPECT_NE(text_error("[neat]\npopulation = 9223372036854775807\n", ConfigFormat::Toml).find("neat.population"),
+            std::string::npos);
+  EXPECT_NE(text_error(R"({"generations": 1e300})", ConfigFormat::Json).find("generations"), std::string::npos);
+  EXPECT_NE(text_error(R"({"generations": -1})", ConfigFormat::Json).find("generations"), std::string::npos);
+  EXPECT_NE(text_error(R"({"generations": 18446744073709551615})", ConfigFormat::Json).find("generations"),
+            std::string::npos);
+  // Deep nesting is an error, not a stack overflow.
+  EXPECT_NE(text_error(std::string(100000, '[') + std::string(100000, ']'), ConfigFormat::Json), "");
+  EXPECT_NE(text_error("a = " + std::string(100000, '[') + std::string(100000, ']'), ConfigFormat::Toml), "");
+}
+
+TEST(RunConfig, TextAndFileReadTheSame) {
+  const std::string text = "regime = \"recurrent\"\n[neat]\npopulation = 30\n";
+  const auto toml = write_temp(".toml", text);
+  EXPECT_EQ(config_to_json(load_config_file(toml)), config_to_json(config_from_text(text, ConfigFormat::Toml, "x")));
+  std::remove(toml.c_str());
+}
+
 TEST(RunConfig, TopologyRulesAreKeysWithHyperNeatDefaults) {
   const nlohmann::json j = config_to_json(RunConfig{});
   EXPECT_EQ(j["neat"]["link_rule"], "positions");

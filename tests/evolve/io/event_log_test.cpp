@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <iterator>
+#include <limits>
 
 #include "tests/support/subprocess.hpp"
 
@@ -101,6 +103,117 @@ TEST(EventLog, MissingFileIsAClearError) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/x.lcmlog"), std::string::npos);
   }
   EXPECT_THROW(EventLogWriter::create("/nonexistent/dir/x.lcmlog"), std::runtime_error);
+}
+
+// The raw bytes of one event header (big-endian), as a damaged log may hold them.
+std::vector<uint8_t> header(int64_t eventnum, int32_t channellen, int32_t datalen) {
+  std::vector<uint8_t> out;
+  auto be = [&](uint64_t v, int n) {
+    for (int i = n - 1; i >= 0; --i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
+  };
+  be(0xEDA1DA01u, 4);
+  be(static_cast<uint64_t>(eventnum), 8);
+  be(77, 8);
+  be(static_cast<uint32_t>(channellen), 4);
+  be(static_cast<uint32_t>(datalen), 4);
+  return out;
+}
+
+std::vector<uint8_t> event(int64_t eventnum, const std::string& channel, const std::vector<uint8_t>& data) {
+  auto out = header(eventnum, static_cast<int32_t>(channel.size()), static_cast<int32_t>(data.size()));
+  out.insert(out.end(), channel.begin(), channel.end());
+  out.insert(out.end(), data.begin(), data.end());
+  return out;
+}
+
+std::vector<uint8_t> operator+(std::vector<uint8_t> a, const std::vector<uint8_t>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+LogContents parse(const std::vector<uint8_t>& b) { return parse_event_log(b.data(), b.size()); }
+
+// LCM 1.3.1's reader, which read_event_log used before, crashes on these
+// (seen with a small program on LCM's lcm_eventlog_read_next_event): a data
+// length of 2^31 - 1 made it allocate datalen + 1 bytes (a signed overflow),
+// fail, and read into a null pointer (SIGSEGV); a length of 10^9 made it
+// allocate 1 GB for a small file (SIGSEGV under a 500 MB address-space limit).
+// Lengths are now checked against the bytes left first (fuzz/fuzz_event_log).
+TEST(EventLog, AbsurdLengthsAreACutEventNotAnAllocation) {
+  const auto first = event(0, "A", bytes(10, 1));
+  for (int32_t datalen : {std::numeric_limits<int32_t>::max(), 1000000000, 1 << 20, 11}) {
+    const auto b = first + header(1, 1, datalen) + std::vector<uint8_t>{'A'} + bytes(10, 2);
+    const auto c = parse(b);
+    ASSERT_EQ(c.records.size(), 1u) << datalen;
+    EXPECT_EQ(c.records[0].data, bytes(10, 1));
+    EXPECT_TRUE(c.truncated);
+    EXPECT_EQ(c.event_bytes, static_cast<int64_t>(first.size()));
+  }
+  for (int32_t channellen : {0, -1, 1000, std::numeric_limits<int32_t>::max()}) {
+    const auto c = parse(first + header(1, channellen, 0) + bytes(1100, 'A'));
+    EXPECT_EQ(c.records.size(), 1u) << channellen;
+    EXPECT_TRUE(c.truncated);
+  }
+  EXPECT_EQ(parse(first + header(1, 1, -5) + bytes(10, 'A')).records.size(), 1u);
+  // A file on disk goes through the same reader.
+  TempDir dir;
+  const auto b = first + header(1, 1, std::numeric_limits<int32_t>::max()) + bytes(4096, 3);
+  std::ofstream(dir / "big.lcmlog", std::ios::binary).write(reinterpret_cast<const char*>(b.data()), b.size());
+  const auto c = read_event_log(dir / "big.lcmlog");
+  EXPECT_EQ(c.records.size(), 1u);
+  EXPECT_TRUE(c.truncated);
+}
+
+TEST(EventLog, ReadsAsLcmDoes) {
+  const auto a = event(5, "CHAN", bytes(3, 1)), b = event(6, "B", {}), c = event(7, "C", bytes(2, 9));
+  const auto all = parse(a + b + c);
+  ASSERT_EQ(all.records.size(), 3u);
+  EXPECT_EQ(all.records[0].eventnum, 5);
+  EXPECT_EQ(all.records[0].timestamp, 77);
+  EXPECT_EQ(all.records[0].channel, "CHAN");
+  EXPECT_EQ(all.records[1].data.size(), 0u);
+  EXPECT_FALSE(all.truncated);
+  // Bytes before the first sync word are skipped (and reported).
+  const auto lead = parse(bytes(7, 0x55) + a + b);
+  EXPECT_EQ(lead.records.size(), 2u);
+  EXPECT_TRUE(lead.truncated);
+  // An event followed by four bytes that are not a sync word is dropped, and
+  // reading stops there.
+  const auto garbage = parse(a + bytes(4, 0) + b);
+  EXPECT_EQ(garbage.records.size(), 0u);
+  EXPECT_TRUE(garbage.truncated);
+  // One to three stray bytes at the end cannot be a header: the event stays.
+  const auto stray = parse(a + b + bytes(3, 0));
+  EXPECT_EQ(stray.records.size(), 2u);
+  EXPECT_TRUE(stray.truncated);
+  // No sync word at all, and nothing at all.
+  EXPECT_EQ(parse(bytes(100, 0xED)).records.size(), 0u);
+  EXPECT_TRUE(parse(bytes(100, 0xED)).truncated);
+  EXPECT_FALSE(parse({}).truncated);
+  TempDir dir;
+  std::ofstream(dir / "empty.lcmlog").close();
+  EXPECT_EQ(read_event_log(dir / "empty.lcmlog").records.size(), 0u);
+  EXPECT_FALSE(read_event_log(dir / "empty.lcmlog").truncated);
+  EXPECT_THROW(read_event_log(dir.path), std::runtime_error);  // a folder
+}
+
+TEST(EventLog, ParsesWhatTheWriterWrote) {
+  TempDir dir;
+  {
+    auto log = EventLogWriter::create(dir / "a.lcmlog");
+    log.write("ROBOZOO_POSE", bytes(1000, 4), 10);
+    log.write("X", bytes(1, 5), 20);
+  }
+  std::ifstream in(dir / "a.lcmlog", std::ios::binary);
+  const std::vector<uint8_t> b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto c = parse(b);
+  ASSERT_EQ(c.records.size(), 2u);
+  EXPECT_EQ(c.records[0].channel, "ROBOZOO_POSE");
+  EXPECT_EQ(c.records[0].data, bytes(1000, 4));
+  EXPECT_EQ(c.records[1].eventnum, 1);
+  EXPECT_EQ(c.records[1].timestamp, 20);
+  EXPECT_FALSE(c.truncated);
+  EXPECT_EQ(c.event_bytes, static_cast<int64_t>(b.size()));
 }
 
 }  // namespace

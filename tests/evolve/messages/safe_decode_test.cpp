@@ -127,6 +127,36 @@ TEST(SafeDecode, RandomGarbageNeverDecodesOrThrows) {
   }
 }
 
+// Found by fuzz/fuzz_run_t: LCM's decoder accepts a string with a zero byte
+// inside (or without its terminator), and its encoder then cuts the string at
+// the first zero, so the message did not re-encode to itself and two logs
+// whose config_json differed after such a byte compared equal.
+TEST(SafeDecode, RejectsStringsThatWouldNotReencodeToThemselves) {
+  run_t m{};
+  m.run_id = "run";
+  m.software_version = "v";
+  m.config_json = "{\"a\":1}";
+  const auto good = encode_message(m);
+  run_t out;
+  std::string why;
+  ASSERT_TRUE(safe_decode(good.data(), good.size(), out, &why)) << why;
+  // config_json is last: its terminator is the message's last byte.
+  auto inside = good;
+  inside[good.size() - 3] = 0;
+  EXPECT_FALSE(safe_decode(inside.data(), inside.size(), out, &why));
+  EXPECT_EQ(why, "config_json: zero byte inside the string");
+  auto unterminated = good;
+  unterminated.back() = 'x';
+  EXPECT_FALSE(safe_decode(unterminated.data(), unterminated.size(), out, &why));
+  EXPECT_EQ(why, "config_json: string without its terminating zero byte");
+  // run_id of a pose: "run" starts after the fingerprint, utime and length.
+  auto p = encode_message(pose(1, 1, 1, 1));
+  p[8 + 8 + 4 + 1] = 0;
+  pose_t pout;
+  EXPECT_FALSE(safe_decode(p.data(), p.size(), pout, &why));
+  EXPECT_EQ(why, "run_id: zero byte inside the string");
+}
+
 TEST(SafeDecode, AGenomeOfAnOlderRobozooIsNamedAsSuch) {
   // genome_t had no node positions; a log that holds one was written before
   // HyperNEAT's topology rules and cannot be replayed by this robozoo.

@@ -1,0 +1,7 @@
+// libFuzzer target: a Json configuration file's text (robozoo-evolve --config FILE).
+#include "fuzz/config_check.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  robozoo::fuzz::check_config_text(data, size, robozoo::ConfigFormat::Json);
+  return 0;
+}

@@ -1,0 +1,159 @@
+// The 3D view: the robot as lit spheres (leaves red, the others blue, as on
+// robozoo-render's zoo sheets), a ground with a grid every 0.5 m, the target
+// marked by a ring and a pole, a camera that follows the robot and orbit
+// controls (drag, wheel, arrow keys) to look around. World z is up.
+import * as THREE from "three";
+import { OrbitControls } from "/three/examples/jsm/controls/OrbitControls.js";
+
+const LEAF = 0xd62c24, INNER = 0x2858cc, TARGET = 0xf0b020;
+
+export class Scene {
+  constructor(container) {
+    this.container = container;
+    // No multisampling: with software WebGL (SwiftShader) it costs several times the frame.
+    this.renderer = new THREE.WebGLRenderer({ antialias: false });
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    container.appendChild(this.renderer.domElement);
+    this.scene = new THREE.Scene();
+    this.scene.background = new THREE.Color(0xe8ecf0);
+    this.scene.fog = new THREE.Fog(0xe8ecf0, 15, 60);
+    this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 300);
+    this.camera.up.set(0, 0, 1);
+    this.camera.position.set(-1.0, -4.5, 2.0);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.target.set(0, 0, 0.3);
+    this.controls.enableKeys = true;
+    this.controls.update();
+
+    this.scene.add(new THREE.HemisphereLight(0xdde8ff, 0x807a70, 0.6));
+    const key = new THREE.DirectionalLight(0xffffff, 0.7);
+    key.position.set(-0.35, -0.55, 1.0);
+    this.scene.add(key);
+    const fill = new THREE.DirectionalLight(0xffffff, 0.25);
+    fill.position.set(0.6, 0.4, 0.35);
+    this.scene.add(fill);
+
+    // The ground is pushed back in depth so that the grid lines on it always win.
+    const ground = new THREE.Mesh(new THREE.PlaneBufferGeometry(400, 400),
+                                  new THREE.MeshBasicMaterial({ color: 0xc9c6bf, polygonOffset: true,
+                                                                  polygonOffsetFactor: 2, polygonOffsetUnits: 2 }));
+    ground.renderOrder = -1;            // drawn first; lines on it do not depend on depth precision
+    ground.material.depthWrite = false;
+    this.scene.add(ground);
+    const grid = new THREE.GridHelper(200, 400, 0x8f8c85, 0x8f8c85);
+    grid.rotation.x = Math.PI / 2;   // GridHelper lies in x-z; the ground is x-y
+    grid.position.z = 0.002;
+    this.scene.add(grid);
+    const coarse = new THREE.GridHelper(200, 200, 0x5f5d58, 0x5f5d58);
+    coarse.rotation.x = Math.PI / 2;
+    coarse.position.z = 0.003;
+    this.scene.add(coarse);
+
+    this.target = new THREE.Group();
+    const ring = new THREE.Mesh(new THREE.RingBufferGeometry(0.35, 0.5, 48),
+                                new THREE.MeshBasicMaterial({ color: TARGET, side: THREE.DoubleSide }));
+    ring.position.z = 0.004;
+    this.target.add(ring);
+    const pole = new THREE.Mesh(new THREE.CylinderBufferGeometry(0.03, 0.03, 1.0, 12),
+                                new THREE.MeshLambertMaterial({ color: TARGET }));
+    pole.rotation.x = Math.PI / 2;
+    pole.position.z = 0.5;
+    this.target.add(pole);
+    this.scene.add(this.target);
+
+    this.sphere = new THREE.SphereBufferGeometry(1, 24, 16);
+    this.leafMaterial = new THREE.MeshLambertMaterial({ color: LEAF });
+    this.innerMaterial = new THREE.MeshLambertMaterial({ color: INNER });
+    this.meshes = [];
+    this.radius = [];
+    this.slots = [];        // per sphere: [mesh index, instance index]
+    this.focus = null;      // followed point (smoothed)
+    this.matrix = new THREE.Matrix4();
+    this.resize();
+    window.addEventListener("resize", () => this.resize());
+  }
+
+  resize() {
+    const w = Math.max(1, this.container.clientWidth), h = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+  }
+
+  setTarget(t) { this.target.position.set(t[0], t[1], 0); }
+
+  /// A robot: radius[i], leaf[i] (1: leaf) per sphere, start: its starting
+  /// centres (x,y,z per sphere). Two instanced meshes, one per colour. The
+  /// camera backs off to frame the robot (keeping the direction it looks in).
+  setRobot(radius, leaf, start) {
+    for (const m of this.meshes) { this.scene.remove(m); m.geometry.dispose(); }
+    this.meshes = [];
+    this.radius = radius;
+    this.slots = [];
+    const counts = [0, 0];
+    for (let i = 0; i < radius.length; i++) this.slots.push([leaf[i] ? 0 : 1, counts[leaf[i] ? 0 : 1]++]);
+    [this.leafMaterial, this.innerMaterial].forEach((mat, k) => {
+      // A geometry of its own per mesh: three.js r111 re-binds the instance
+      // matrices only when the geometry changes between draws.
+      const mesh = new THREE.InstancedMesh(this.sphere.clone(), mat, Math.max(1, counts[k]));
+      mesh.visible = counts[k] > 0;
+      mesh.frustumCulled = false;
+      this.scene.add(mesh);
+      this.meshes.push(mesh);
+    });
+    this.focus = null;
+    let extent = 0.5;
+    const n = radius.length;
+    const c = [0, 1, 2].map((k) => { let m = 0; for (let i = 0; i < n; i++) m += start[3 * i + k] / n; return m; });
+    for (let i = 0; i < n; i++)
+      extent = Math.max(extent, Math.hypot(start[3 * i] - c[0], start[3 * i + 1] - c[1], start[3 * i + 2] - c[2]) + radius[i]);
+    const view = this.camera.position.clone().sub(this.controls.target).normalize();
+    this.camera.position.copy(this.controls.target).addScaledVector(view, 3.2 * extent / Math.tan(this.camera.fov * Math.PI / 360) / 2);
+    this.place(start, start, 0);
+  }
+
+  /// Sphere centres (flat x,y,z per sphere), a + (b - a) * f.
+  place(a, b, f) {
+    const n = this.radius.length;
+    if (a.length !== 3 * n || b.length !== 3 * n) return;
+    let cx = 0, cy = 0, cz = 0, mass = 0;
+    const pos = new THREE.Vector3(), q = new THREE.Quaternion(), scale = new THREE.Vector3();
+    for (let i = 0; i < n; i++) {
+      const x = a[3 * i] + (b[3 * i] - a[3 * i]) * f;
+      const y = a[3 * i + 1] + (b[3 * i + 1] - a[3 * i + 1]) * f;
+      const z = a[3 * i + 2] + (b[3 * i + 2] - a[3 * i + 2]) * f;
+      const r = this.radius[i];
+      pos.set(x, y, z);
+      scale.set(r, r, r);
+      this.matrix.compose(pos, q, scale);
+      const [m, k] = this.slots[i];
+      this.meshes[m].setMatrixAt(k, this.matrix);
+      const w = r * r * r;
+      cx += w * x; cy += w * y; cz += w * z; mass += w;
+    }
+    for (const m of this.meshes) m.instanceMatrix.needsUpdate = true;
+    if (mass > 0) this.follow(cx / mass, cy / mass, cz / mass);
+  }
+
+  /// Moves camera and orbit centre together towards the robot's centre of mass
+  /// (a spring of about half a second), keeping the angle the user chose.
+  follow(x, y, z) {
+    const goal = new THREE.Vector3(x, y, Math.max(0.2, z));
+    if (this.focus === null) {
+      this.focus = goal.clone();
+      const d = this.focus.clone().sub(this.controls.target);
+      this.controls.target.add(d);
+      this.camera.position.add(d);
+      return;
+    }
+    const step = goal.sub(this.focus).multiplyScalar(0.08);
+    this.focus.add(step);
+    this.controls.target.add(step);
+    this.camera.position.add(step);
+  }
+
+  render() {
+    this.controls.update();
+    this.renderer.render(this.scene, this.camera);
+  }
+}
