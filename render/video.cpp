@@ -3,13 +3,19 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 
+#include "render/frame_queue.hpp"
 #include "render/overlay.hpp"
 
 namespace robozoo::render {
 
 namespace {
+/// Frames drawn ahead of the encoder at most (2.7 MB each at 1280x720).
+constexpr int kQueuedFrames = 4;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -130,17 +136,45 @@ VideoStats render_video(const VideoSubject& subject, const VideoOptions& options
   VideoFrames frames(subject, options, *stage);
   VideoEncoder encoder(path, options.encoder);
   VideoStats stats;
-  Image frame;
-  while (frames.next(frame, &stats)) {
-    const auto te = std::chrono::steady_clock::now();
-    encoder.add_frame(frame);
-    stats.encode_seconds += seconds_since(te);
-    ++stats.frames;
-    if (progress) progress(stats.frames, frames.count());
+  // This thread draws (it holds the GL context); another encodes, in frame
+  // order, what the queue hands it: the encoder sees the same frames in the same
+  // order as when one thread did both, so the file has the same bytes.
+  FrameQueue queue(kQueuedFrames);
+  std::exception_ptr encode_failure;
+  double encode_seconds = 0;
+  std::thread encoding([&] {
+    try {
+      Image frame;
+      while (queue.pop(frame)) {
+        const auto te = std::chrono::steady_clock::now();
+        encoder.add_frame(frame);
+        encode_seconds += seconds_since(te);
+        queue.recycle(std::move(frame));
+      }
+    } catch (...) {
+      encode_failure = std::current_exception();
+      queue.abort();
+    }
+  });
+  try {
+    Image frame = queue.spare();
+    while (frames.next(frame, &stats)) {
+      if (!queue.push(std::move(frame))) break;  // the encoder failed
+      ++stats.frames;
+      if (progress) progress(stats.frames, frames.count());
+      frame = queue.spare();
+    }
+    queue.close();
+  } catch (...) {
+    queue.abort();
+    encoding.join();
+    throw;
   }
+  encoding.join();
+  if (encode_failure) std::rethrow_exception(encode_failure);
   const auto te = std::chrono::steady_clock::now();
   encoder.finish();
-  stats.encode_seconds += seconds_since(te);
+  stats.encode_seconds = encode_seconds + seconds_since(te);
   stats.total_seconds = seconds_since(t0);
   return stats;
 }

@@ -49,14 +49,16 @@ int video_frame_count(double duration, const VideoOptions& o);
 
 struct VideoStats {
   int frames = 0;
-  double draw_seconds = 0;    ///< drawing and reading back frames (s, wall)
-  double overlay_seconds = 0; ///< text and panels (s, wall)
-  double encode_seconds = 0;  ///< colour conversion, encoding and writing (s, wall)
-  double total_seconds = 0;   ///< (s, wall)
+  double draw_seconds = 0;    ///< drawing and reading back frames (s, wall, drawing thread)
+  double overlay_seconds = 0; ///< text and panels (s, wall, drawing thread)
+  double encode_seconds = 0;  ///< colour conversion, encoding and writing (s, wall, encoding thread)
+  double total_seconds = 0;   ///< (s, wall): less than the sum, as drawing and encoding overlap
 };
 
-/// Renders and encodes the video to `path`. `progress(done, total)` is called
-/// after each frame. `stage` (optional) is reused and resized.
+/// Renders and encodes the video to `path`: the calling thread draws (with
+/// `stage`'s GL context) while a second thread encodes, a few frames behind.
+/// `progress(done, total)` is called on the calling thread after each frame is
+/// drawn. `stage` (optional) is reused and resized.
 VideoStats render_video(const VideoSubject& subject, const VideoOptions& options, const std::string& path,
                         const std::function<void(int, int)>& progress = {}, Stage* stage = nullptr);
 

@@ -18,9 +18,13 @@ enum class Activation : int8_t {
 };
 constexpr int kNumActivations = 6;
 
+/// The signed sigmoid from e^-x (the batched CPPN path computes e^-x for a whole
+/// row first): the one expression both paths share, so they give the same bits.
+inline double signed_sigmoid_from_exp(double exp_minus_x) { return 2.0 / (1.0 + exp_minus_x) - 1.0; }
+
 inline double activate(Activation a, double x) {
   switch (a) {
-    case Activation::SignedSigmoid: return 2.0 / (1.0 + std::exp(-x)) - 1.0;
+    case Activation::SignedSigmoid: return signed_sigmoid_from_exp(std::exp(-x));
     case Activation::SignedCosine: return std::cos(x);
     case Activation::Gaussian: return std::exp(-x * x);
     case Activation::Linear: return x;
@@ -29,6 +33,11 @@ inline double activate(Activation a, double x) {
   }
   return 0.0;
 }
+
+/// activate(a, x[p]) for p in [0, n), written to y (y may equal x). Every element
+/// gets exactly activate()'s operations (the same libm calls, no -ffast-math), so
+/// the bits are the same; only the loop is shaped for the vector unit.
+void activate_row(Activation a, const double* x, double* y, int n);
 
 /// Short lower-case name ("signed_sigmoid", "signed_cosine", "gaussian", "linear", "sine",
 /// "steepened_sigmoid").

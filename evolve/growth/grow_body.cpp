@@ -62,7 +62,6 @@ GrownBody grow_body(CppnProbe& probe, const GrowthParams& params) {
 
   // Per-cloud scratch, allocated once.
   const int n_points = cloud.size();
-  std::vector<CppnOutputs> outputs(static_cast<size_t>(n_points));
   std::vector<int> order;
   order.reserve(static_cast<size_t>(n_points));
 
@@ -72,22 +71,24 @@ GrownBody grow_body(CppnProbe& probe, const GrowthParams& params) {
     const Eigen::Vector3d center = body.spheres[parent].center;
     const double r_parent = body.spheres[parent].radius;
 
-    // 2. Query every cloud point.
+    // 2. Query every cloud point, all in one batch.
+    probe.begin(n_points);
+    for (int k = 0; k < n_points; ++k) probe.set(k, cloud.point(center, r_parent, k), r_parent);
+    probe.run();
     order.clear();
-    for (int k = 0; k < n_points; ++k) {
-      probe.query(cloud.point(center, r_parent, k), r_parent, outputs[k]);
-      if (outputs[k][kOutMatter] > params.t_matter) order.push_back(k);  // rule (a)
-    }
+    for (int k = 0; k < n_points; ++k)
+      if (probe.output(k, kOutMatter) > params.t_matter) order.push_back(k);  // rule (a)
     // 3. By m descending; equal m keep cloud order (a total order, so std::sort
     //    gives the stable sort's result without its buffer).
     std::sort(order.begin(), order.end(), [&](int a, int b) {
-      const double ma = outputs[a][kOutMatter], mb = outputs[b][kOutMatter];
+      const double ma = probe.output(a, kOutMatter), mb = probe.output(b, kOutMatter);
       if (ma != mb) return ma > mb;
       return a < b;
     });
 
+    CppnOutputs o;
     for (int k : order) {
-      const CppnOutputs& o = outputs[k];
+      probe.outputs(k, o);
       const Eigen::Vector3d p = cloud.point(center, r_parent, k);
       const double r = sphere_radius(r_parent, o[kOutRadius], params);
       const bool jointed = o[kOutJoint] > params.t_joint;

@@ -21,25 +21,29 @@ void set_ctrnn_weights(Robot& robot, CppnProbe& probe, const GrowthParams& param
       throw std::logic_error("set_ctrnn_weights: sensor or neuron on a missing sphere");
     return robot.spheres[sphere].center;
   };
-  CppnOutputs out;
+  // Every query of the robot in one batch: sensor k -> neuron i, then the pairs
+  // j <= i of neurons.
+  const Eigen::Index pairs = nn * (nn + 1) / 2;
+  probe.begin(static_cast<int>(ns * nn + pairs));
+  int q = 0;
   for (Eigen::Index k = 0; k < ns; ++k) {
     const Sensor& s = robot.sensors[k];
     const Eigen::Vector3d& a = center(s.sphere);
-    for (Eigen::Index i = 0; i < nn; ++i) {
-      const Eigen::Vector3d mid = (a + center(robot.neurons[i].sphere)) / 2.0;
-      probe.query(mid, 0.0, &s.type, out);
-      robot.w_sensor_neuron(k, i) = expressed_weight(out[kOutWeight], params);
-    }
+    for (Eigen::Index i = 0; i < nn; ++i)
+      probe.set(q++, (a + center(robot.neurons[i].sphere)) / 2.0, 0.0, &s.type);
   }
   for (Eigen::Index j = 0; j < nn; ++j) {
     const Eigen::Vector3d& a = center(robot.neurons[j].sphere);
-    for (Eigen::Index i = j; i < nn; ++i) {
-      const Eigen::Vector3d mid = (a + center(robot.neurons[i].sphere)) / 2.0;
-      probe.query(mid, 0.0, out);
-      robot.w_neuron_neuron(j, i) = robot.w_neuron_neuron(i, j) =
-          expressed_weight(out[kOutWeight], params);
-    }
+    for (Eigen::Index i = j; i < nn; ++i) probe.set(q++, (a + center(robot.neurons[i].sphere)) / 2.0, 0.0);
   }
+  probe.run();
+  q = 0;
+  for (Eigen::Index k = 0; k < ns; ++k)
+    for (Eigen::Index i = 0; i < nn; ++i)
+      robot.w_sensor_neuron(k, i) = expressed_weight(probe.output(q++, kOutWeight), params);
+  for (Eigen::Index j = 0; j < nn; ++j)
+    for (Eigen::Index i = j; i < nn; ++i)
+      robot.w_neuron_neuron(j, i) = robot.w_neuron_neuron(i, j) = expressed_weight(probe.output(q++, kOutWeight), params);
 }
 
 }  // namespace robozoo

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "evolve/core/rng.hpp"
+#include "evolve/cppn/random_genome.hpp"
 #include "evolve/neat/random_genome.hpp"
 
 #include <cstring>
@@ -98,7 +99,7 @@ TEST(Network, TenUpdatesEqualFeedForwardPassUpToDepthTen) {
       const double in[3] = {rng.uniform(-1, 1), rng.uniform(-1, 1), 1.0};
       double fast, sync;
       net.query(in, &fast);
-      net.query_synchronous(in, &sync);
+      net.query_reference(in, &sync);
       const double ff = feed_forward_chain(g, l, hidden, in);
       EXPECT_EQ(fast, sync) << "single pass must be bit-identical to 10 updates";
       EXPECT_DOUBLE_EQ(sync, ff);
@@ -183,29 +184,144 @@ namespace {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-TEST(Network, SkippingSettledNodesIsBitIdenticalToPlainUpdates) {
-  // Recurrent robot CPPNs after NEAT mutations: the optimised synchronous
-  // procedure must give exactly the plain one's bits, output by output.
-  const GenomeLayout layout = robot_layout();
-  NeatParams neat;
-  RandomGenomeParams rp;
-  rp.rounds = 40;
-  Rng rng(17);
-  int cyclic = 0;
-  for (int t = 0; t < 60; ++t) {
-    const Genome g = random_evolved_genome(layout, Regime::Recurrent, neat, rp, rng, t);
-    cyclic += has_cycle(g);
-    Network net(g, layout);
-    for (int q = 0; q < 50; ++q) {
-      double in[9];
-      for (double& x : in) x = rng.uniform(-2, 2);
-      double fast[11], plain[11];
-      net.query_synchronous(in, fast);
-      net.query_reference(in, plain);
-      for (int o = 0; o < 11; ++o) ASSERT_TRUE(same_bits(fast[o], plain[o])) << "genome " << t << " output " << o;
+// Batches shaped like growth's: a cloud (x, y on a circle, z = 0, r_parent and
+// bias the same at every point, no one-hot), weight queries (midpoints, r_parent
+// 0, one-hots that differ from point to point), and points with every input random.
+QueryArray cloud_batch(int n, double r, Rng& rng) {
+  QueryArray in = QueryArray::Zero(9, n);
+  const double cx = rng.uniform(-1, 1), cy = rng.uniform(-1, 1);
+  for (int k = 0; k < n; ++k) {
+    in(0, k) = cx + r * std::cos(0.0628 * k);
+    in(1, k) = cy + r * std::sin(0.0628 * k);
+    in(3, k) = r;
+    in(4, k) = 1.0;
+  }
+  return in;
+}
+
+QueryArray weight_batch(int n, Rng& rng) {
+  QueryArray in = QueryArray::Zero(9, n);
+  for (int k = 0; k < n; ++k) {
+    in(0, k) = rng.uniform(-1, 1);
+    in(1, k) = rng.uniform(-1, 1);
+    in(4, k) = 1.0;
+    const int one_hot = static_cast<int>(rng.uniform_int(-1, 3));
+    if (one_hot >= 0) in(5 + one_hot, k) = 1.0;
+  }
+  return in;
+}
+
+QueryArray random_batch(int n, Rng& rng) {
+  QueryArray in(9, n);
+  for (int i = 0; i < 9; ++i)
+    for (int k = 0; k < n; ++k) in(i, k) = rng.uniform(-2, 2);
+  return in;
+}
+
+/// Same bits, or both NaN: which NaN's sign and payload an addition passes on
+/// depends on the order of its operands, which the compiler may choose either way
+/// (IEEE addition commutes); growth reads every NaN output as 0.
+bool same_value(double a, double b) { return same_bits(a, b) || (std::isnan(a) && std::isnan(b)); }
+
+/// Every output of every point of the batch, bit for bit against the plain
+/// per-point procedure; false (with a message) at the first difference.
+::testing::AssertionResult batch_matches_reference(Network& net, const QueryArray& in, bool synchronous) {
+  QueryArray out(11, in.cols());
+  if (synchronous)
+    net.query_batch_synchronous(in, out);
+  else
+    net.query_batch(in, out);
+  for (int k = 0; k < in.cols(); ++k) {
+    double point[9], want[11];
+    for (int i = 0; i < 9; ++i) point[i] = in(i, k);
+    net.query_reference(point, want);
+    for (int o = 0; o < 11; ++o)
+      if (!same_value(out(o, k), want[o]))
+        return ::testing::AssertionFailure() << "point " << k << " of " << in.cols() << ", output " << o << ": batch "
+                                             << out(o, k) << ", per point " << want[o];
+  }
+  return ::testing::AssertionSuccess();
+}
+
+struct BatchCounts {
+  int genomes = 0, cyclic = 0, single_pass = 0, non_finite = 0, nan = 0;
+};
+
+void check_genome(const Genome& g, Rng& rng, BatchCounts& counts) {
+  Network net(g, robot_layout());
+  ++counts.genomes;
+  counts.cyclic += has_cycle(g);
+  counts.single_pass += net.single_pass();
+  // Sizes around the block size, so full, partial and several blocks are covered.
+  const int sizes[] = {1, 37, Network::kBlockPoints, Network::kBlockPoints + 1, 100};
+  const int n = sizes[rng.uniform_int(0, 4)];
+  const QueryArray batches[] = {cloud_batch(n, rng.uniform(0.02, 0.3), rng), weight_batch(n, rng),
+                                random_batch(n, rng)};
+  for (const QueryArray& in : batches) {
+    ASSERT_TRUE(batch_matches_reference(net, in, false)) << "genome " << counts.genomes;
+    if (net.single_pass()) {
+      ASSERT_TRUE(batch_matches_reference(net, in, true)) << "genome " << counts.genomes;
     }
   }
-  EXPECT_GT(cyclic, 20);  // the set really exercises cycles
+  QueryArray out(11, n);
+  for (const QueryArray& in : batches) {
+    net.query_batch(in, out);
+    counts.non_finite += !out.isFinite().all();
+    counts.nan += out.isNaN().any();
+  }
+}
+
+TEST(Network, BatchedQueriesAreBitIdenticalToThePerPointProcedure) {
+  // Thousands of genomes: NEAT-evolved of both regimes, fully recurrent starts
+  // (cycles through every output, all 10 updates needed), and random CPPNs whose
+  // hidden nodes may be linear or sine (unbounded loops: infinities and NaNs).
+  const GenomeLayout layout = robot_layout();
+  NeatParams neat;
+  Rng rng(2024);
+  BatchCounts ff, rec, full, wild;
+  NeatParams sparse = neat;  // recurrent links only as mutations add them
+  sparse.initial_links = InitialLinks::InputsToOutputs;
+  for (int t = 0; t < 800; ++t) {
+    RandomGenomeParams rp;
+    rp.rounds = static_cast<int>(rng.uniform_int(0, 60));
+    check_genome(random_evolved_genome(layout, Regime::FeedForward, neat, rp, rng, t), rng, ff);
+    check_genome(random_evolved_genome(layout, Regime::Recurrent, sparse, rp, rng, t), rng, rec);
+    rp.rounds = static_cast<int>(rng.uniform_int(0, 30));
+    check_genome(random_evolved_genome(layout, Regime::Recurrent, neat, rp, rng, t), rng, full);
+    if (HasFatalFailure()) return;
+  }
+  for (int t = 0; t < 600; ++t) {
+    Genome g = random_cppn(layout, rng.bernoulli(0.7), static_cast<int>(rng.uniform_int(0, 8)),
+                           static_cast<int>(rng.uniform_int(0, 40)), rng);
+    for (auto& node : g.nodes)
+      if (node.kind == NodeKind::Hidden) node.activation = static_cast<Activation>(rng.uniform_int(0, 4));
+    for (auto& link : g.links)  // some huge weights: sums overflow to infinities, cos and sin give NaNs
+      if (rng.bernoulli(0.25)) link.weight *= std::pow(10.0, static_cast<double>(rng.uniform_int(10, 300)));
+    check_genome(g, rng, wild);
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_EQ(ff.cyclic, 0);
+  EXPECT_GT(ff.single_pass, 400);  // (single-pass networks are also checked on the forced synchronous path)
+  EXPECT_GT(rec.cyclic, 200);
+  EXPECT_EQ(full.cyclic, 800);
+  EXPECT_EQ(full.single_pass, 0);
+  EXPECT_GT(wild.non_finite, 5);  // the huge weights really reach infinities and NaNs
+  EXPECT_GT(wild.nan, 5);
+}
+
+TEST(Network, BatchRejectsWrongShapes) {
+  NeatParams neat;
+  Rng rng(1);
+  Network net(random_evolved_genome(robot_layout(), Regime::Recurrent, neat, RandomGenomeParams{}, rng, 0),
+              robot_layout());
+  QueryArray in = QueryArray::Zero(9, 3), out(11, 3), short_out(11, 2), wide_in = QueryArray::Zero(8, 3);
+  EXPECT_THROW(net.query_batch(in, short_out), std::invalid_argument);
+  EXPECT_THROW(net.query_batch(wide_in, out), std::invalid_argument);
+  QueryArray none(9, 0), none_out(11, 0);
+  net.query_batch(none, none_out);  // an empty batch is no query
+  EXPECT_EQ(net.queries(), 0);
+  net.query_batch(in, out);
+  EXPECT_EQ(net.queries(), 3);
 }
 
 }  // namespace
