@@ -26,6 +26,7 @@ extern "C" {
 #include "render/video_subject.hpp"
 #include "render/zoo_sheet.hpp"
 #include "evolve/core/version.hpp"
+#include "evolve/run/stop_signals.hpp"
 
 using namespace robozoo;
 using namespace robozoo::render;
@@ -242,17 +243,9 @@ int run_live_command(const LiveArgs& a) {
   o.picture.font_dir = a.video.font_dir;
   o.video = video_options(a.video);
   validate(o);
-  // SIGINT and SIGTERM end the loop cleanly: blocked here, polled there (no
-  // global flag, no handler).
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
-  auto should_stop = [&] {
-    timespec zero{0, 0};
-    return sigtimedwait(&stop_signals, nullptr, &zero) > 0;
-  };
+  // SIGINT and SIGTERM end the loop cleanly: blocked here, before any thread
+  // starts, and polled by the loop (no handler, no global flag).
+  const std::function<bool()> should_stop = poll_interrupts();
   const LiveSummary s = run_live(o, should_stop, std::cerr);
   return s.failures > 0 ? 1 : 0;
 }

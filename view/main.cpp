@@ -13,6 +13,7 @@
 #include "view/log_feed.hpp"
 #include "view/server.hpp"
 #include "view/view_state.hpp"
+#include "evolve/run/stop_signals.hpp"
 
 namespace {
 
@@ -58,17 +59,9 @@ int run(CLI::App& app, Args& a) {
   if (a.dirs.page.empty()) a.dirs.page = defaults.page;
   if (a.dirs.three.empty()) a.dirs.three = defaults.three;
 
-  // SIGINT and SIGTERM end the feed's loop cleanly: blocked here, before any
-  // thread starts, and polled by the feed (no handler, no global flag).
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
-  auto should_stop = [&] {
-    timespec zero{0, 0};
-    return sigtimedwait(&stop_signals, nullptr, &zero) > 0;
-  };
+  // SIGINT and SIGTERM end the loop cleanly: blocked here, before any thread
+  // starts, and polled by the loop (no handler, no global flag).
+  const std::function<bool()> should_stop = poll_interrupts();
 
   const AssetTable assets = AssetTable::load(a.dirs);
   if (!live) a.state.keep_streams = 0;  // a log is in memory anyway: every replay from its poses

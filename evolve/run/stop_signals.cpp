@@ -48,6 +48,19 @@ void unblock_stop_signals() {
   pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
 }
 
+std::function<bool()> poll_interrupts() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  if (const int rc = pthread_sigmask(SIG_BLOCK, &set, nullptr))
+    throw std::system_error(rc, std::generic_category(), "pthread_sigmask");
+  return [set] {
+    timespec zero{0, 0};
+    return sigtimedwait(&set, nullptr, &zero) > 0;
+  };
+}
+
 StopWatcher::StopWatcher(std::string program) : program_(std::move(program)) {
   if (!stop_signals_blocked())
     throw std::logic_error("StopWatcher: block_stop_signals() must run before the watcher starts");

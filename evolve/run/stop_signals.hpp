@@ -21,6 +21,11 @@ namespace robozoo {
 void block_stop_signals();
 /// Unblocks them in the calling thread (their default action applies again).
 void unblock_stop_signals();
+/// Blocks SIGINT and SIGTERM in the calling thread (and so in every thread it
+/// starts afterwards) and returns a poll that says, without waiting, whether one
+/// of them has arrived since (taking it): for a loop that ends cleanly on Ctrl-C
+/// with no handler and no global flag. Throws std::system_error on failure.
+std::function<bool()> poll_interrupts();
 
 class StopWatcher {
  public:
