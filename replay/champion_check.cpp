@@ -1,11 +1,13 @@
 #include "replay/champion_check.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/neat/population.hpp"
+#include "evolve/run/trajectory.hpp"
 #include "evolve/sim/simulation.hpp"
 #include "replay/morphology_compare.hpp"
 #include "replay/pose_compare.hpp"
@@ -29,40 +31,93 @@ bool decode_event(const LogContents& log, const LogIndex& index, size_t event, T
   return safe_decode(r.data.data(), r.data.size(), out);
 }
 
-/// Poses a trajectory of `steps_run` steps has when every k-th step is logged,
-/// plus step 0 and the last step (as Evolution::publish_trajectory writes them).
-int64_t expected_poses(int steps_run, int k) {
-  return 1 + steps_run / k + (steps_run % k != 0 ? 1 : 0);
-}
-
+/// The logged poses of `g` against its re-simulated trajectory: with a rule,
+/// the i-th logged pose must be the trajectory's i-th (each step once, in
+/// order; all of them unless the log may end early); every logged pose's values
+/// are compared with the trajectory's pose at its step.
 void compare_poses(const LogContents& log, const LogIndex& index, const LoggedGenome& g, const Robot& robot,
-                   const RunConfig& config, ValueComparer& cmp, ChampionResult& out) {
-  std::vector<pose_t> poses;
+                   const RunConfig& config, TrajectoryRule rule, ValueComparer& cmp, ChampionResult& out) {
+  struct Logged {
+    pose_t pose;
+    int64_t eventnum;
+  };
+  std::vector<Logged> poses;
   poses.reserve(g.pose_events.size());
   for (size_t e : g.pose_events) {
-    pose_t p{};
-    if (decode_event(log, index, e, p)) poses.push_back(std::move(p));
+    Logged p{pose_t{}, log.records[index.events[e].record].eventnum};
+    if (decode_event(log, index, e, p.pose)) poses.push_back(std::move(p));
   }
   out.poses_logged = static_cast<int64_t>(poses.size());
-  if (poses.empty()) return;
-  std::stable_sort(poses.begin(), poses.end(), [](const pose_t& a, const pose_t& b) { return a.step < b.step; });
-  Simulation sim(robot, config.eval.sim);
-  for (const pose_t& p : poses) {
-    while (sim.state().step < p.step && sim.step()) {
+  if (poses.empty() && rule != TrajectoryRule::Complete) return;
+  const Trajectory t =
+      simulate_trajectory(robot, config.eval.sim, config.pose_every, g.run_id, g.generation, g.genome_id);
+  const auto& want = t.poses;
+  if (rule == TrajectoryRule::Lossy) {
+    out.poses_expected = static_cast<int64_t>(want.size());
+    cmp.set_context("trajectory");
+    size_t j = 0, matched = 0;
+    bool ordered = true;
+    for (size_t i = 0; i < poses.size() && ordered; ++i) {
+      while (j < want.size() && want[j].step < poses[i].pose.step) ++j;
+      if (j == want.size() || want[j].step != poses[i].pose.step) {
+        cmp.note("pose " + std::to_string(i) + " (received) step", std::to_string(poses[i].pose.step),
+                 j == want.size() ? std::string("none after the trajectory's last step")
+                                  : "a later step than the previous pose's, of the trajectory (next: " +
+                                        std::to_string(want[j].step) + ")");
+        ordered = false;
+        break;
+      }
+      ++matched;
+      ++j;
     }
+    if (ordered) out.poses_missing = static_cast<int64_t>(want.size() - matched);
+  } else if (rule != TrajectoryRule::None) {
+    out.poses_expected = static_cast<int64_t>(want.size());
+    cmp.set_context("trajectory");
+    for (size_t i = 0; i < std::max(poses.size(), want.size()); ++i) {
+      if (rule == TrajectoryRule::Damaged && (i >= poses.size() || i >= want.size() || poses[i].pose.step != want[i].step)) {
+        out.problems.push_back("its trajectory cannot be proved complete: events near it do not decode (" +
+                               std::to_string(poses.size()) + " of " + std::to_string(want.size()) + " poses read)");
+        break;
+      }
+      if (i >= poses.size()) {
+        if (rule == TrajectoryRule::Complete)
+          cmp.note("poses", std::to_string(poses.size()) + " (none from step " + std::to_string(want[i].step) + ")",
+                   std::to_string(want.size()) + " (steps 0 to " + std::to_string(want.back().step) + " every " +
+                       std::to_string(config.pose_every) + ", and the last)");
+        break;
+      }
+      if (i >= want.size()) {
+        cmp.note("pose " + std::to_string(i) + " (event " + std::to_string(poses[i].eventnum) + ") step",
+                 std::to_string(poses[i].pose.step),
+                 "none: the trajectory has " + std::to_string(want.size()) + " poses");
+        break;
+      }
+      if (poses[i].pose.step != want[i].step) {
+        cmp.note("pose " + std::to_string(i) + " (event " + std::to_string(poses[i].eventnum) + ") step",
+                 std::to_string(poses[i].pose.step), std::to_string(want[i].step));
+        break;  // the first difference of the sequence; the values are compared below
+      }
+    }
+  }
+  std::map<int32_t, size_t> at_step;
+  for (size_t i = 0; i < want.size(); ++i) at_step.emplace(want[i].step, i);
+  for (const Logged& p : poses) {
     ++out.poses_compared;
     bool same;
-    if (sim.state().step != p.step) {
-      cmp.set_context("pose", p.step);
-      cmp.note("step", std::to_string(p.step),
-               "the re-simulation ends at step " + std::to_string(sim.state().step));
+    const auto it = at_step.find(p.pose.step);
+    if (it == at_step.end()) {
+      cmp.set_context("pose", p.pose.step);
+      cmp.note("step (event " + std::to_string(p.eventnum) + ")", std::to_string(p.pose.step),
+               "a step of the trajectory (0 to " + std::to_string(t.result.steps_run) + ", every " +
+                   std::to_string(config.pose_every) + ", and the last)");
       same = false;
     } else {
-      same = compare_pose(p, make_pose_message(g.run_id, g.generation, g.genome_id, sim.state(), 0), cmp);
+      same = compare_pose(p.pose, want[it->second], cmp);
     }
     if (!same) {
       ++out.poses_diverged;
-      if (out.first_divergent_step < 0) out.first_divergent_step = p.step;
+      if (out.first_divergent_step < 0) out.first_divergent_step = p.pose.step;
     }
   }
 }
@@ -70,7 +125,8 @@ void compare_poses(const LogContents& log, const LogIndex& index, const LoggedGe
 }  // namespace
 
 ChampionResult check_champion(const LogContents& log, const LogIndex& index, const LoggedGenome& g,
-                              const RunConfig& config, const ChampionCheckParams& params, RecomputeCache* cache) {
+                              const RunConfig& config, const ChampionCheckParams& params, RecomputeCache* cache,
+                              TrajectoryRule trajectory) {
   ChampionResult out;
   out.run_id = g.run_id;
   out.generation = g.generation;
@@ -136,7 +192,7 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
       }
     }
     if (!out.morphology_logged) out.problems.push_back("its morphology is not in the log");
-    compare_poses(log, index, g, robot, config, cmp, out);
+    compare_poses(log, index, g, robot, config, trajectory, cmp, out);
 
     out.fitness_compared = true;
     out.logged_fitness = gm.fitness;
@@ -148,8 +204,6 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
     cmp.real({"r_term"}, gm.r_term, e.r);
     cmp.real({"d_term"}, gm.d_term, e.d);
     cmp.integer({"outcome"}, gm.outcome, static_cast<int>(e.outcome));
-    if (e.outcome != Outcome::NotSimulated && out.poses_logged > 0)
-      out.poses_expected = expected_poses(e.sim.steps_run, config.pose_every);
   } catch (const std::exception& e) {
     out.problems.push_back(std::string("re-computing it failed: ") + e.what());
   }

@@ -14,6 +14,16 @@
 
 namespace robozoo {
 
+/// What a genome's check must find of its trajectory (log_structure decides it
+/// from the generation's messages).
+enum class TrajectoryRule : int8_t {
+  None,      ///< no pose may be logged for it (not a new champion, or not simulated)
+  Complete,  ///< every pose of its trajectory, once and in order
+  MayBeCut,  ///< in order, but the log may end before the trajectory does (or no rule is known)
+  Damaged,   ///< due, but events near it do not decode: a gap is a problem of the input, not a divergence
+  Lossy,     ///< received from a lossy bus: poses in order, each at most once; gaps are loss (poses_missing)
+};
+
 struct ChampionResult {
   enum class Status { Ok, Diverged, Unusable };
   Status status = Status::Ok;
@@ -30,8 +40,9 @@ struct ChampionResult {
   bool morphology_logged = false;
   bool morphology_ok = false;
   int64_t poses_logged = 0;           ///< decodable poses of this genome in the log (count)
-  int64_t poses_expected = 0;         ///< poses its trajectory has at the run's pose_every (count), 0 if not simulated
+  int64_t poses_expected = 0;         ///< poses its trajectory has at the run's pose_every (count), 0 if none is due
   int64_t poses_compared = 0;         ///< (count)
+  int64_t poses_missing = 0;          ///< TrajectoryRule::Lossy: poses of the trajectory not received (count)
   int64_t poses_diverged = 0;         ///< poses with at least one differing value (count)
   int64_t first_divergent_step = -1;  ///< -1 if none
   bool fitness_compared = false;
@@ -54,9 +65,10 @@ struct ChampionCheckParams {
 /// Checks `g` against a re-computation with `config` (the configuration of
 /// its run's ROBOZOO_RUN). Bad input becomes problems in the result, never an
 /// exception. With a cache, the growth and evaluation of genes already
-/// recomputed are re-used (poses are always re-simulated).
+/// recomputed are re-used (poses are always re-simulated). `trajectory`: whether
+/// its logged poses must be its whole trajectory (each step once, in order).
 ChampionResult check_champion(const LogContents& log, const LogIndex& index, const LoggedGenome& g,
                               const RunConfig& config, const ChampionCheckParams& params,
-                              RecomputeCache* cache = nullptr);
+                              RecomputeCache* cache = nullptr, TrajectoryRule trajectory = TrajectoryRule::MayBeCut);
 
 }  // namespace robozoo

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "evolve/messages/safe_decode.hpp"
+#include "replay/log_structure.hpp"
 #include "replay/logged_config.hpp"
 
 namespace robozoo {
@@ -68,6 +69,14 @@ CheckReport check_log(const ScannedLog& scanned, const CheckOptions& options, co
     return report;
   }
 
+  // The order, counts and figures of every message; which champions owe a trajectory.
+  std::map<std::string, RunConfig> config_of_run;
+  for (const auto& [event, config] : config_of_event) config_of_run.emplace(index.events[event].run_id, config);
+  StructureReport structure = check_log_structure(log, index, config_of_run, log.truncated);
+  report.structure = std::move(structure.differences);
+  report.generations_proved = structure.generations;
+  report.input_problems.insert(report.input_problems.end(), structure.incomplete.begin(), structure.incomplete.end());
+
   const auto todo = index.to_check(options.all_genomes);
   ChampionCheckParams params;
   params.tolerance = options.tolerance;
@@ -86,7 +95,10 @@ CheckReport check_log(const ScannedLog& scanned, const CheckOptions& options, co
       c.problems.push_back("no ROBOZOO_RUN of run " + g.run_id + " before it, so its configuration is unknown");
       report.champions.push_back(std::move(c));
     } else {
-      report.champions.push_back(check_champion(log, index, g, config->second, params, &cache));
+      const auto rule = structure.trajectory.find(g.genome_event);
+      report.champions.push_back(check_champion(log, index, g, config->second, params, &cache,
+                                                rule == structure.trajectory.end() ? TrajectoryRule::MayBeCut
+                                                                                   : rule->second));
     }
     if (progress) progress(i + 1, todo.size());
   }

@@ -46,7 +46,7 @@ int64_t CheckReport::count(ChampionResult::Status s) const {
 
 int CheckReport::exit_code() const {
   if (!fatal.empty()) return 2;
-  if (count(ChampionResult::Status::Diverged) > 0) return 1;
+  if (count(ChampionResult::Status::Diverged) > 0 || !structure.empty()) return 1;
   if (count(ChampionResult::Status::Unusable) > 0 || !input_problems.empty()) return 2;
   return 0;
 }
@@ -96,6 +96,9 @@ std::string format_text(const CheckReport& r) {
   if (!r.fatal.empty()) o << "UNUSABLE: " << r.fatal << "\n";
   const bool with_run = r.runs.size() > 1;
   for (const auto& c : r.champions) o << champion_line(c, with_run) << "\n";
+  constexpr size_t kShown = 20;
+  for (size_t i = 0; i < r.structure.size() && i < kShown; ++i) o << "DIVERGED " << describe(r.structure[i]) << "\n";
+  if (r.structure.size() > kShown) o << "  ... and " << r.structure.size() - kShown << " more message differences\n";
   for (const auto& p : r.input_problems) {
     o << "input: ";
     if (p.eventnum >= 0) o << "event " << p.eventnum << " (" << p.channel << "): ";
@@ -109,7 +112,9 @@ std::string format_text(const CheckReport& r) {
   }
   o << "summary: " << plural(static_cast<int64_t>(r.champions.size()), "genome", "genomes") << " checked: "
     << r.count(ChampionResult::Status::Ok) << " ok, " << r.count(ChampionResult::Status::Diverged) << " diverged, "
-    << r.count(ChampionResult::Status::Unusable) << " unusable; " << morph << " morphologies, "
+    << r.count(ChampionResult::Status::Unusable) << " unusable; " << r.generations_proved
+    << " generations' messages proved, " << plural(static_cast<int64_t>(r.structure.size()), "message differs", "messages differ")
+    << "; " << morph << " morphologies, "
     << plural(poses, "pose", "poses") << " and " << fit << " fitnesses compared "
     << (r.tolerance > 0 ? "within a relative error of " + short_number(r.tolerance) : std::string("bit for bit"))
     << "; " << plural(static_cast<int64_t>(r.input_problems.size()), "input problem", "input problems");
@@ -175,6 +180,17 @@ nlohmann::json to_json(const CheckReport& r) {
                               {"max_error", error_json(c.max_error)},
                               {"mismatches", m}});
   }
+  j["generations_proved"] = r.generations_proved;
+  j["structure"] = json::array();
+  for (const auto& d : r.structure)
+    j["structure"].push_back({{"eventnum", d.eventnum >= 0 ? json(d.eventnum) : json(nullptr)},
+                              {"channel", d.channel},
+                              {"run_id", d.run_id},
+                              {"generation", d.generation},
+                              {"field", d.field},
+                              {"logged", d.logged},
+                              {"expected", d.expected},
+                              {"rule", d.rule}});
   j["input_problems"] = json::array();
   for (const auto& p : r.input_problems)
     j["input_problems"].push_back({{"eventnum", p.eventnum >= 0 ? json(p.eventnum) : json(nullptr)},
@@ -184,6 +200,7 @@ nlohmann::json to_json(const CheckReport& r) {
                   {"ok", r.count(ChampionResult::Status::Ok)},
                   {"diverged", r.count(ChampionResult::Status::Diverged)},
                   {"unusable", r.count(ChampionResult::Status::Unusable)},
+                  {"message_differences", r.structure.size()},
                   {"input_problems", r.input_problems.size()},
                   {"seconds", r.seconds},
                   {"exit_code", r.exit_code()}};

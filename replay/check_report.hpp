@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "replay/champion_check.hpp"
+#include "replay/log_structure.hpp"
 #include "runlog/log_index.hpp"
 
 namespace robozoo {
@@ -30,12 +31,15 @@ struct CheckReport {
   int64_t file_bytes = 0;            ///< (bytes)
   std::vector<RunInfo> runs;         ///< distinct runs, in log order
   std::vector<ChampionResult> champions;
-  std::vector<InputProblem> input_problems;  ///< damage and unusable events
+  std::vector<LogDifference> structure;      ///< messages out of place, missing, extra, or with wrong figures
+  int32_t generations_proved = 0;           ///< generation_t messages whose place and figures were checked (count)
+  std::vector<InputProblem> input_problems;  ///< damage, unusable events, a last generation cut short
   std::string fatal;                 ///< not empty: the log could not be checked at all
   double seconds = 0.0;              ///< wall time of the check (s)
 
   int64_t count(ChampionResult::Status s) const;
-  /// 0: every champion matches and the input is intact; 1: a divergence; 2:
+  /// 0: every champion matches, every message is where and what it should be,
+  /// and the input is intact; 1: a divergence (a champion or a message); 2:
   /// unusable input (fatal, an unusable champion or a damaged/undecodable event).
   int exit_code() const;
 };

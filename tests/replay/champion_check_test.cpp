@@ -68,9 +68,16 @@ TEST(ChampionCheck, APoseAfterTheEndOfTheSimulationIsADivergence) {
   const ChampionResult r = check_champion(f.log, ix, g, f.config, {});
   EXPECT_EQ(r.status, ChampionResult::Status::Diverged);
   EXPECT_EQ(r.poses_diverged, 1);
-  ASSERT_EQ(r.mismatches.size(), 1u);
-  EXPECT_EQ(r.mismatches[0].field, "step");
-  EXPECT_NE(r.mismatches[0].recomputed.find("re-simulation ends at step"), std::string::npos);
+  // Named twice: as the trajectory's pose after its last one, and as a pose at a
+  // step the trajectory does not have.
+  ASSERT_EQ(r.mismatches.size(), 2u);
+  EXPECT_EQ(r.mismatches[0].what, "trajectory");
+  EXPECT_NE(r.mismatches[0].field.find("step"), std::string::npos) << r.mismatches[0].field;
+  EXPECT_EQ(r.mismatches[0].logged, std::to_string(p.step));
+  EXPECT_NE(r.mismatches[0].recomputed.find("none: the trajectory has"), std::string::npos) << r.mismatches[0].recomputed;
+  EXPECT_EQ(r.mismatches[1].what, "pose");
+  EXPECT_EQ(r.mismatches[1].step, p.step);
+  EXPECT_NE(r.mismatches[1].recomputed.find("a step of the trajectory"), std::string::npos) << r.mismatches[1].recomputed;
 }
 
 TEST(ChampionCheck, AMissingMorphologyMakesItUnusableButTheRestIsChecked) {
