@@ -3,7 +3,8 @@
 //   robozoo-fuzz-corpus LOG CHECKPOINT CONFIG_JSON OUT
 //
 // writes OUT/<target>/ for every target in fuzz/: a few messages of each
-// channel (and eval_result_t built from the logged genomes' results), a short
+// channel (and eval_result_t built from the logged genomes' results, bus_status_t
+// from the logged generations), a short
 // log of the run's first events, the configuration as JSON and as TOML, the
 // logged champions' genomes as genome JSON, and the checkpoint. Seeds are kept
 // small: libFuzzer's longest input defaults to the longest seed.
@@ -139,6 +140,20 @@ int main(int argc, char** argv) {
         nlohmann::json g = genome_to_json(genome_from_message(m, robot_layout()));
         if (n > 1) g["links"].erase(g["links"].begin() + std::min<size_t>(5, g["links"].size()), g["links"].end());
         write_file(out / "genome_json" / (std::to_string(n) + ".json"), g.dump() + "\n");
+      }
+      if (r.channel == kChannelGeneration) {
+        // bus_status_t is never logged: made from the run's own generation messages,
+        // as robozoo-evolve sends it after each generation.
+        generation_t m;
+        if (!safe_decode(r.data.data(), r.data.size(), m)) throw std::runtime_error("a logged generation_t does not decode");
+        bus_status_t b{};
+        b.utime = m.utime;
+        b.run_id = m.run_id;
+        b.generation = m.generation;
+        b.messages_published = 5 * (m.generation + 1);
+        b.bytes_published = 4096 * (m.generation + 1);
+        b.publish_failures = n - 1;
+        write_bytes(out / "bus_status_t" / (std::to_string(n) + ".bin"), encode_message(b));
       }
       if (r.channel == kChannelRun) {
         run_t m;

@@ -1,11 +1,15 @@
 // robozoo-log: a log from the terminal, for people who script (issue 14).
 //   robozoo-log summary LOG [--json]                      channels, counts, runs, generations, champions, version
 //   robozoo-log cat LOG [--channel C] [--generation G]    one JSON object per message (jq, pandas)
+//   robozoo-log bus SENT RECORDED                         what a bus recording (lcm-logger) lost or changed
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 
+#include <nlohmann/json.hpp>
+
 #include "evolve/core/version.hpp"
+#include "evolve/io/log_compare.hpp"
 #include "runlog/log_cat.hpp"
 #include "runlog/log_reader.hpp"
 #include "runlog/log_summary.hpp"
@@ -26,7 +30,37 @@ int main(int argc, char** argv) {
   cat->add_option("LOG", log, "a log written by robozoo-evolve (or lcm-logger)")->required();
   cat->add_option("--channel", filter.channel, "only this channel (ROBOZOO_POSE, or just pose)");
   cat->add_option("--generation", generation, "only the messages of this generation")->check(CLI::NonNegativeNumber);
+  std::string recorded;
+  CLI::App* bus = app.add_subcommand(
+      "bus", "compare a recording of the bus (lcm-logger's) with the log of what was sent: events missing "
+             "(loss on the way), or changed, added, repeated or reordered (a defect). Exit 0 complete, 1 a "
+             "defect, 3 events missing");
+  bus->add_option("SENT", log, "the log robozoo-evolve (or robozoo-replay play) wrote")->required();
+  bus->add_option("RECORDED", recorded, "the recording of the bus")->required();
+  bus->add_flag("--json", json, "the result as one JSON object");
   CLI11_PARSE(app, argc, argv);
+  if (bus->parsed()) {
+    LogContents sent, got;
+    try {
+      sent = scan_event_log(log).contents;
+      got = scan_event_log(recorded).contents;
+    } catch (const std::exception& e) {
+      std::cerr << "robozoo-log: " << e.what() << "\n";
+      return 2;
+    }
+    const BusRecording r = compare_bus_recording(sent, got);
+    const int code = !r.defect.empty() ? 1 : r.missing > 0 ? 3 : 0;
+    if (json)
+      std::cout << nlohmann::json{{"sent", r.sent}, {"received", r.received}, {"missing", r.missing},
+                                  {"defect", r.defect.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.defect)},
+                                  {"exit_code", code}}
+                       .dump()
+                << "\n";
+    else
+      std::cout << "sent " << r.sent << " robozoo events, recorded " << r.received << ", missing " << r.missing
+                << (r.defect.empty() ? std::string() : "; DEFECT: " + r.defect) << "\n";
+    return code;
+  }
   ScannedLog scanned;
   try {
     scanned = scan_event_log(log);

@@ -53,6 +53,11 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->default_str(kDefaultLcmUrl);
   app.add_option("--pose-every", o.pose_every, "publish every k-th step of a new champion's trajectory")
       ->check(CLI::Range(1, 1000000000));
+  app.add_option("--bus-rate", o.bus_rate,
+                 "live publishing's sustained rate in bytes/s after a 64 kB burst (0: unpaced); UDP multicast "
+                 "drops what a subscriber's receive buffer cannot hold")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_flag("--publish-all", o.publish_all, "publish every genome and morphology, not only champions");
   app.add_flag("--resume", o.resume, "continue the run of --log from its checkpoint");
   app.add_flag("--force", o.force,
@@ -80,7 +85,32 @@ std::optional<int> open_evolution(const RunConfig& config, const EvolveOptions& 
     std::cerr << "robozoo-evolve: run " << evo->run_id() << " in " << opts.log_path << " is already complete\n";
     return 0;
   }
+  // Whether --resume resumed or started afresh is said even with --quiet.
+  if (opts.resume) std::cerr << resume_line(*evo, opts) << std::endl;
   return std::nullopt;
+}
+
+std::string resume_line(const Evolution& evo, const EvolveOptions& opts) {
+  std::ostringstream out;
+  out << "robozoo-evolve: ";
+  if (evo.resumed())
+    out << "resumed run " << evo.run_id() << " at generation " << evo.start_generation() << " of "
+        << evo.config().generations << " (" << evo.evaluations() << " evaluations before)";
+  else
+    out << "no checkpoint " << opts.log_path << ".checkpoint: run " << evo.run_id() << " starts at generation 0";
+  return out.str();
+}
+
+std::string session_line(const Evolution& evo) {
+  return "robozoo-evolve: " + std::to_string(evo.evaluations_this_process()) + " evaluations in this process (" +
+         std::to_string(evo.evaluations()) + " in the run), generations " + std::to_string(evo.start_generation()) +
+         " to " + std::to_string(evo.config().generations - 1);
+}
+
+std::string bus_line(const Evolution& evo) {
+  if (evo.publish_failures() < 0) return "";
+  return "robozoo-evolve: bus: " + std::to_string(evo.messages_published()) + " messages published, " +
+         std::to_string(evo.publish_failures()) + " publish failures";
 }
 
 std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConfig& config, EvolveOptions& opts) {
@@ -108,6 +138,7 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
       return 2;
     }
     if (app.count("--lcm-url")) opts.lcm_url = o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url;
+    opts.bus_bytes_per_second = o.bus_rate;
     const std::string id = o.run_id.empty() ? default_run_id(config) : o.run_id;
     opts.log_path = o.log_path.empty() ? "runs/" + id + ".lcmlog" : o.log_path;
     const auto parent = std::filesystem::path(opts.log_path).parent_path();
@@ -162,6 +193,9 @@ int run_run_command(const CLI::App& app, const RunOptions& o) {
       if (!o.quiet) std::cerr << format_progress(r) << std::endl;
     });
     if (!o.quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";
+    if (!o.quiet || opts.resume) std::cerr << session_line(*evo) << "\n";
+    // Said even with --quiet: a live run's subscribers need to know what was lost at the source.
+    if (!opts.lcm_url.empty()) std::cerr << bus_line(*evo) << "\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "robozoo-evolve: " << e.what() << "\n";

@@ -22,6 +22,7 @@ struct RunOptions {
   std::string log_path;
   std::string lcm_url;
   int pose_every = 4;
+  double bus_rate = 1e6;  ///< --bus-rate (bytes/s)
   bool publish_all = false;
   bool resume = false;
   bool force = false;
@@ -51,5 +52,13 @@ std::optional<int> open_evolution(const RunConfig& config, const EvolveOptions& 
 /// The lines printed when a run starts (log, checkpoint, live URL); `evaluators`
 /// says what evaluates, e.g. "2 workers".
 std::string run_banner(const Evolution& evo, const EvolveOptions& opts, const std::string& evaluators);
+/// --resume: "resumed run R at generation G of N (E evaluations before)", or that
+/// no checkpoint was there and the run starts at generation 0 (printed even with --quiet).
+std::string resume_line(const Evolution& evo, const EvolveOptions& opts);
+/// The end of a run: evaluations made in this process and in the whole run, and
+/// the generations this process evolved (printed even with --quiet after --resume).
+std::string session_line(const Evolution& evo);
+/// "bus: N messages published, F publish failures"; empty for a run that does not publish.
+std::string bus_line(const Evolution& evo);
 
 }  // namespace robozoo

@@ -37,8 +37,13 @@ bool Bus::publish(const std::string& channel, const std::vector<uint8_t>& data) 
     tokens_ -= need;
   }
   const int rc = lcm_->publish(channel, data.data(), static_cast<unsigned int>(data.size()));
-  if (rc != 0) ++failures_;
-  return rc == 0;
+  if (rc != 0) {
+    ++failures_;
+    return false;
+  }
+  ++published_;
+  bytes_ += static_cast<int64_t>(data.size());
+  return true;
 }
 
 lcm::LCM& Bus::lcm() { return *lcm_; }

@@ -29,7 +29,9 @@ class Bus {
   Bus& operator=(const Bus&) = delete;
   /// Publishes raw bytes; returns false (and counts it) when LCM reports a failure.
   bool publish(const std::string& channel, const std::vector<uint8_t>& data);
-  int64_t failures() const { return failures_; }
+  int64_t failures() const { return failures_; }    ///< messages LCM refused (count)
+  int64_t published() const { return published_; }  ///< messages LCM accepted (count)
+  int64_t bytes() const { return bytes_; }          ///< their payload bytes (bytes)
   const std::string& url() const { return url_; }
   lcm::LCM& lcm();
 
@@ -37,6 +39,8 @@ class Bus {
   std::string url_;
   std::unique_ptr<lcm::LCM> lcm_;
   int64_t failures_ = 0;
+  int64_t published_ = 0;
+  int64_t bytes_ = 0;
   BusParams params_;
   double tokens_ = 0;       // bytes that may be sent now
   double last_refill_ = 0;  // (s, steady clock)

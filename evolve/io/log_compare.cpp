@@ -28,7 +28,7 @@ struct Event {
 std::vector<Event> robozoo_events(const LogContents& log) {
   std::vector<Event> out;
   for (const auto& r : log.records) {
-    if (r.channel.rfind("ROBOZOO_", 0) != 0) continue;
+    if (r.channel.rfind("ROBOZOO_", 0) != 0 || r.channel == kChannelBus) continue;
     Event e;
     e.record = &r;
     if (!is_known_channel(r.channel))
@@ -100,6 +100,39 @@ std::string first_log_difference(const LogContents& a, const LogContents& b) {
            " (event number " + std::to_string(longer[n].record->eventnum) + ")";
   }
   return "";
+}
+
+BusRecording compare_bus_recording(const LogContents& sent, const LogContents& received) {
+  BusRecording out;
+  const auto es = robozoo_events(sent), er = robozoo_events(received);
+  out.sent = es.size();
+  out.received = er.size();
+  size_t j = 0;  // next candidate in `sent`
+  for (size_t i = 0; i < er.size(); ++i) {
+    const Event& y = er[i];
+    if (!y.decoded && is_known_channel(y.record->channel)) {
+      out.defect = "received event " + std::to_string(i) + " (event number " + std::to_string(y.record->eventnum) +
+                   ", " + y.record->channel + ") does not decode: " + y.why;
+      return out;
+    }
+    size_t k = j;
+    while (k < es.size() && !(es[k].decoded && es[k].record->channel == y.record->channel && es[k].norm == y.norm)) ++k;
+    if (k == es.size()) {
+      // Equal to nothing later in what was sent: changed, extra or out of order.
+      bool earlier = false;
+      for (size_t m = 0; m < j && !earlier; ++m)
+        earlier = es[m].decoded && es[m].record->channel == y.record->channel && es[m].norm == y.norm;
+      out.defect = "received event " + std::to_string(i) + " (event number " + std::to_string(y.record->eventnum) +
+                   ", " + y.record->channel + ") " +
+                   (earlier ? "repeats or reorders an earlier sent event" : "equals no event that was sent after " +
+                                                                               std::to_string(j) + " events");
+      return out;
+    }
+    out.missing += k - j;
+    j = k + 1;
+  }
+  out.missing += es.size() - j;
+  return out;
 }
 
 }  // namespace robozoo

@@ -14,7 +14,8 @@
 // difference, and a NaN equals only a NaN with the same bits.
 // A message that does not decode as its channel's type never equals anything,
 // not even the same bytes in the other log. A ROBOZOO_ channel this code does
-// not know is compared as raw bytes, unnormalised.
+// not know is compared as raw bytes, unnormalised. ROBOZOO_BUS (bus_status_t,
+// sent on the bus only, describing one transmission) is never compared.
 #include <string>
 
 #include "evolve/io/event_log.hpp"
@@ -37,5 +38,18 @@ bool is_known_channel(const std::string& channel);
 /// channel, and the first differing byte of the normalised messages, or the
 /// reason a message does not decode, or the counts when one log has more events.
 std::string first_log_difference(const LogContents& a, const LogContents& b);
+
+/// A recording of the bus (lcm-logger's) against the log of what was sent.
+struct BusRecording {
+  size_t sent = 0;      ///< robozoo events sent (count)
+  size_t received = 0;  ///< robozoo events recorded (count)
+  size_t missing = 0;   ///< sent events not recorded (count): loss on the way, not a defect
+  /// Empty when the recording is what was sent with events missing at most: every
+  /// recorded event equal (after normalisation) to a sent one, each at most once, in
+  /// the order sent. Otherwise names the first recorded event that was changed,
+  /// added, repeated or reordered, or does not decode.
+  std::string defect;
+};
+BusRecording compare_bus_recording(const LogContents& sent, const LogContents& received);
 
 }  // namespace robozoo

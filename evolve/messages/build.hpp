@@ -9,6 +9,7 @@
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/growth/robot.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "robozoo/bus_status_t.hpp"
 #include "robozoo/generation_t.hpp"
 #include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
@@ -23,6 +24,8 @@ inline constexpr const char* kChannelGeneration = "ROBOZOO_GENERATION";
 inline constexpr const char* kChannelGenome = "ROBOZOO_GENOME";
 inline constexpr const char* kChannelMorphology = "ROBOZOO_MORPHOLOGY";
 inline constexpr const char* kChannelPose = "ROBOZOO_POSE";
+/// Bus only (bus_status_t), never logged: how live publishing went.
+inline constexpr const char* kChannelBus = "ROBOZOO_BUS";
 
 /// Software version written into every run_t.
 std::string software_version();

@@ -162,4 +162,12 @@ int64_t wire_size(const eval_result_t*, const uint8_t* data, size_t len, std::st
   return -1;
 }
 
+int64_t wire_size(const bus_status_t*, const uint8_t* data, size_t len, std::string* why) {
+  Walker w(data, len, why);
+  if (w.hash(fingerprint<bus_status_t>()) && w.skip(8, "utime") && w.str("run_id") &&
+      w.skip(4 + 3 * 8, "bus status fields"))
+    return w.end();
+  return -1;
+}
+
 }  // namespace robozoo

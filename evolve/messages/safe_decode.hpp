@@ -17,6 +17,7 @@
 #include "robozoo/genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
+#include "robozoo/bus_status_t.hpp"
 #include "robozoo/run_t.hpp"
 
 namespace robozoo {
@@ -30,6 +31,7 @@ int64_t wire_size(const cppn_genome_t*, const uint8_t* data, size_t len, std::st
 int64_t wire_size(const morphology_t*, const uint8_t* data, size_t len, std::string* why);
 int64_t wire_size(const pose_t*, const uint8_t* data, size_t len, std::string* why);
 int64_t wire_size(const eval_result_t*, const uint8_t* data, size_t len, std::string* why);
+int64_t wire_size(const bus_status_t*, const uint8_t* data, size_t len, std::string* why);
 
 /// Decodes `len` bytes into `out` when they are exactly one message of type T.
 /// Returns false (with `why`) otherwise; never throws, never over-allocates.

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "evolve/fitness/evaluate.hpp"
+#include "evolve/run/trajectory.hpp"
 #include "evolve/sim/simulation.hpp"
 
 namespace robozoo {
@@ -49,7 +50,9 @@ std::string format_progress(const ProgressReport& r) {
                 r.summary.generation + 1, r.generations_total, r.summary.best_fitness, r.summary.mean_fitness,
                 r.summary.num_species, 100.0 * r.simulated_share, r.evals_per_second,
                 human_time(r.elapsed_seconds).c_str(), human_time(r.remaining_seconds).c_str());
-  return buf;
+  std::string line = buf;
+  if (r.publish_failures >= 0) line += "  bus failures " + std::to_string(r.publish_failures);
+  return line;
 }
 
 Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Evaluator& evaluator)
@@ -93,12 +96,22 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint);
     save_checkpoint();
   }
-  if (!options_.lcm_url.empty() && !finished_) bus_ = std::make_unique<Bus>(options_.lcm_url);
+  if (!options_.lcm_url.empty() && !finished_) {
+    BusParams bp;
+    bp.bytes_per_second = options_.bus_bytes_per_second;
+    bus_ = std::make_unique<Bus>(options_.lcm_url, bp);
+  }
+  start_evaluations_ = evaluations_;
+  start_generation_ = generations_done();
 }
 
 Evolution::~Evolution() = default;
 
 int Evolution::generation() const { return population_->generation(); }
+
+int64_t Evolution::messages_published() const { return bus_ ? bus_->published() - bus_statuses_ : -1; }
+
+int64_t Evolution::publish_failures() const { return bus_ ? bus_->failures() : -1; }
 
 int Evolution::generations_done() const { return finished_ ? config_.generations : population_->generation(); }
 
@@ -133,17 +146,9 @@ void Evolution::run(const std::function<void(const ProgressReport&)>& on_generat
 
 std::vector<pose_t> Evolution::champion_trajectory(const Genome& champion, int32_t generation,
                                                    const EvalSummary& expected) const {
-  const Robot robot = grow_genome(champion, config_.eval);
-  Simulation sim(robot, config_.eval.sim);
-  const int k = config_.pose_every;
-  std::vector<pose_t> poses;
-  auto pose = [&] { poses.push_back(make_pose_message(run_id_, generation, champion.id, sim.state(), 0)); };
-  pose();  // step 0: the starting pose
-  while (sim.step()) {
-    if (sim.state().step % k == 0) pose();
-  }
-  if (sim.state().step % k != 0) pose();  // the final pose, whatever k
-  const SimResult r = sim.result();
+  Trajectory t = simulate_trajectory(grow_genome(champion, config_.eval), config_.eval.sim, config_.pose_every, run_id_,
+                                     generation, champion.id);
+  const SimResult& r = t.result;
   // The trajectory must be exactly the evaluation the worker made.
   if (r.d != expected.d || static_cast<int>(r.outcome) != static_cast<int>(expected.outcome) ||
       r.steps_run != expected.steps_run)
@@ -151,7 +156,7 @@ std::vector<pose_t> Evolution::champion_trajectory(const Genome& champion, int32
                            " gave d = " + std::to_string(r.d) + " after " + std::to_string(r.steps_run) +
                            " steps, its evaluation gave d = " + std::to_string(expected.d) + " after " +
                            std::to_string(expected.steps_run));
-  return poses;
+  return std::move(t.poses);
 }
 
 bool Evolution::step(const std::function<void(const ProgressReport&)>& on_generation) {
@@ -222,12 +227,9 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   }
   timing.messages += seconds_since(tm);
 
-  // The champion "changes" when its genes do: NEAT copies a champion unchanged
-  // under a fresh id, and that copy's trajectory is already in the log.
+  // The champion "changes" when its logged genes do (trajectory_key).
   const Genome& champion = genomes[champ];
-  Genome anonymous = champion;
-  anonymous.id = 0;
-  const uint64_t champion_hash = genome_hash(anonymous);
+  const uint64_t champion_hash = trajectory_key(champion);
   tm = std::chrono::steady_clock::now();
   std::vector<pose_t> poses;
   if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated)
@@ -269,6 +271,21 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
     emit(kChannelPose, encode_message(p), p.utime);
   }
   timing.trajectory += seconds_since(tm);
+  if (bus_) {
+    // How publishing went, on the bus only (the log is the record).
+    bus_status_t b{};
+    b.utime = now_us();
+    b.run_id = run_id_;
+    b.generation = gen;
+    b.messages_published = messages_published();
+    b.bytes_published = bus_->bytes() - bus_status_bytes_;
+    b.publish_failures = bus_->failures();
+    const std::vector<uint8_t> bytes = encode_message(b);
+    if (bus_->publish(kChannelBus, bytes)) {
+      ++bus_statuses_;
+      bus_status_bytes_ += static_cast<int64_t>(bytes.size());
+    }
+  }
 
   ProgressReport report;
   report.summary = s;
@@ -285,6 +302,8 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   const int done = gen + 1;
   report.remaining_seconds = report.elapsed_seconds / done * (config_.generations - done);
   report.simulated_share = simulated / n;
+  report.messages_published = messages_published();
+  report.publish_failures = publish_failures();
   if (on_generation) on_generation(report);
   return true;
 }

@@ -25,6 +25,7 @@ struct EvolveOptions {
   std::string log_path;         ///< the run's LCM log
   std::string checkpoint_path;  ///< empty: log_path + ".checkpoint"
   std::string lcm_url;          ///< empty: no live publishing
+  double bus_bytes_per_second = 1e6;  ///< live publishing's sustained rate (bytes/s); 0: unpaced (BusParams)
   bool resume = false;          ///< continue from the checkpoint
   bool force_version = false;   ///< resume a checkpoint written by another robozoo version anyway
   bool background_checkpoint = false;  ///< write each generation's checkpoint on a thread while the
@@ -54,6 +55,10 @@ struct ProgressReport {
   double remaining_seconds = 0.0;  ///< estimate
   double simulated_share = 0.0;    ///< share of robots sent to the simulator
   StepTimings timings;             ///< where this generation's time went
+  /// Live publishing so far (-1 each when the run does not publish): messages
+  /// LCM accepted and refused (count).
+  int64_t messages_published = -1;
+  int64_t publish_failures = -1;
 };
 
 /// One line of progress for a generation.
@@ -82,6 +87,14 @@ class Evolution {
   const RunConfig& config() const { return config_; }
   /// True when the constructor resumed from a checkpoint.
   bool resumed() const { return resumed_; }
+  /// The generation the run started or resumed at in this process (count).
+  int start_generation() const { return start_generation_; }
+  /// Genome evaluations of the whole run so far, and those made in this process (count).
+  int64_t evaluations() const { return evaluations_; }
+  int64_t evaluations_this_process() const { return evaluations_ - start_evaluations_; }
+  /// Live publishing in this process (count); -1 each without --lcm-url.
+  int64_t messages_published() const;
+  int64_t publish_failures() const;
   /// Finished generations held by the checkpoint on disk, written in full
   /// (thread-safe: for a signal watcher). With background_checkpoint the last
   /// generation's checkpoint may still be on its way.
@@ -109,6 +122,10 @@ class Evolution {
   std::unique_ptr<Bus> bus_;
   std::unique_ptr<CheckpointWriter> checkpoint_writer_;
   int64_t evaluations_ = 0;
+  int64_t start_evaluations_ = 0;  // evaluations_ when this process took the run over
+  int start_generation_ = 0;
+  int64_t bus_statuses_ = 0;       // ROBOZOO_BUS messages sent (not counted as published run messages)
+  int64_t bus_status_bytes_ = 0;
   double best_so_far_ = 0.0;
   uint64_t last_champion_hash_ = 0;  // content hash (id aside) of the last champion
   double elapsed_before_ = 0.0;   // from earlier sessions of a resumed run

@@ -140,6 +140,7 @@ TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {
   TempDir dir;
   ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2, {}, kLonger), 0);
   const std::string log = dir / "cut.lcmlog";
+  bool resumed_later = false;  // one resume at least took over after generation 0
   // Kill at several moments: at start, early and mid-run; then once more while resuming.
   for (int delay_ms : {20, 300, 800}) {
     const pid_t pid = spawn(evolve_args(log, 2, {}, kLonger), dir / "out.txt");
@@ -155,12 +156,31 @@ TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {
       wait_status(again);
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
-    ASSERT_EQ(run_evolve(log, 2, {"--resume"}, kLonger), 0);
+    // The resume must be a resume: it says where it took the run over (even with
+    // --quiet), that is where the checkpoint was, and it evaluates only the rest.
+    const bool checkpointed = file_exists(log + ".checkpoint");
+    const int64_t done_before = checkpointed ? read_checkpoint(log + ".checkpoint").evaluations : 0;
+    const auto o = run_shell(join(evolve_args(log, 2, {"--resume"}, kLonger)));
+    ASSERT_EQ(o.status, 0) << o.output;
+    const int64_t whole = 8 * 40;
+    if (checkpointed) {
+      const std::string line = "resumed run feedforward-s7 at generation " + std::to_string(done_before / 40) +
+                               " of 8 (" + std::to_string(done_before) + " evaluations before)";
+      EXPECT_NE(o.output.find(line), std::string::npos) << o.output;
+      resumed_later = resumed_later || done_before > 0;
+    } else {
+      EXPECT_NE(o.output.find("starts at generation 0"), std::string::npos) << o.output;
+    }
+    EXPECT_NE(o.output.find(std::to_string(whole - done_before) + " evaluations in this process (" +
+                            std::to_string(whole) + " in the run)"),
+              std::string::npos)
+        << o.output;
     EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "")
         << "killed after " << delay_ms << " ms";
     std::remove(log.c_str());
     std::remove((log + ".checkpoint").c_str());
   }
+  EXPECT_TRUE(resumed_later) << "no kill left a checkpoint past generation 0: the test proved no resume";
 }
 
 TEST(EvolveCli, ResumeUsesTheCheckpointsConfigurationNotTheCommandLines) {
@@ -174,8 +194,15 @@ TEST(EvolveCli, ResumeUsesTheCheckpointsConfigurationNotTheCommandLines) {
   kill_process(pid, SIGKILL);
   wait_status(pid);
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_TRUE(file_exists(log + ".checkpoint"));
+  const int64_t done_before = read_checkpoint(log + ".checkpoint").evaluations;
   const auto o = run_shell(join({bin("robozoo-evolve"), "--log", log, "--resume", "--workers", "2", "--quiet"}));
   ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("resumed run feedforward-s7 at generation " + std::to_string(done_before / 40)),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find(std::to_string(320 - done_before) + " evaluations in this process"), std::string::npos)
+      << o.output;
   EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "");
 }
 

@@ -53,6 +53,18 @@ Outcome interrupt(const std::vector<std::string>& argv, const std::string& log, 
   return o;
 }
 
+/// The resumed run said (even with --quiet) that it took the run over at
+/// `generation` and evaluated only the remaining generations (kLonger: 8 x 40).
+void expect_resumed_at(const Outcome& o, int generation) {
+  ASSERT_GT(generation, 0) << "a resume at generation 0 cannot be told from a restart";
+  EXPECT_NE(o.output.find("resumed run feedforward-s7 at generation " + std::to_string(generation) + " of 8"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find(std::to_string((8 - generation) * 40) + " evaluations in this process (320 in the run)"),
+            std::string::npos)
+      << o.output;
+}
+
 void expect_resume_line(const Outcome& o, const std::string& log) {
   EXPECT_NE(o.output.find("the run can be resumed with: robozoo-evolve --log " + log + " --resume"),
             std::string::npos)
@@ -95,6 +107,7 @@ TEST(EvolveMpi, RankKilledMidRunThenResumedLocally) {
   EXPECT_LT(c.population.generation, 8);
   const Outcome resumed = run_logged(evolve_args(log, 2, {"--resume"}, kLonger));
   ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expect_resumed_at(resumed, c.population.generation);
   EXPECT_EQ(log_difference(dir / "whole.lcmlog", log), "");
 }
 
@@ -115,8 +128,10 @@ TEST(EvolveMpi, CancelledJobThenResumedOnOtherRankCounts) {
   const Outcome again = interrupt(mpi_evolve_args(2, log, {"--resume"}, kLonger), log, resumed_at + 1,
                                   [](pid_t mpirun) { kill_process(rank_pid(mpirun, 1), SIGKILL); }, dir / "out2.txt");
   expect_resume_line(again, log);
+  const int last_resume = generations_done(log);
   const Outcome resumed = run_logged(mpi_evolve_args(4, log, {"--resume"}, kLonger));
   ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expect_resumed_at(resumed, last_resume);
   EXPECT_EQ(log_difference(dir / "whole.lcmlog", log), "");
 }
 

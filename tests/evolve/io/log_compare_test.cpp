@@ -444,3 +444,57 @@ TEST(LogCompare, NamesTheFirstDifferingByte) {
 
 }  // namespace
 }  // namespace robozoo
+
+namespace robozoo {
+namespace {
+
+// A bus recording: missing events are loss (counted, not a defect); anything
+// changed, extra, repeated or reordered is a defect, named at once.
+TEST(BusRecording, TheSameEventsAreComplete) {
+  const BusRecording r = compare_bus_recording(log_of(Messages{}), log_of(Messages{}));
+  EXPECT_EQ(r.defect, "");
+  EXPECT_EQ(r.missing, 0u);
+  EXPECT_EQ(r.sent, 7u);
+  EXPECT_EQ(r.received, 7u);
+}
+
+TEST(BusRecording, MissingEventsAreCountedNotDefects) {
+  LogContents b = log_of(Messages{});
+  b.records.erase(b.records.begin() + 5);  // a pose
+  b.records.erase(b.records.begin() + 2);  // the generation
+  b.records.pop_back();                    // the last pose
+  const BusRecording r = compare_bus_recording(log_of(Messages{}), b);
+  EXPECT_EQ(r.defect, "");
+  EXPECT_EQ(r.missing, 3u);
+}
+
+TEST(BusRecording, ChangedExtraRepeatedOrReorderedEventsAreDefects) {
+  Messages changed;
+  changed.poses[1].body_position[0][0] += 1e-9;
+  EXPECT_NE(compare_bus_recording(log_of(Messages{}), log_of(changed)).defect, "");
+  LogContents extra = log_of(Messages{});
+  extra.records.push_back(record(kChannelPose, pose_message(30)));
+  EXPECT_NE(compare_bus_recording(log_of(Messages{}), extra).defect.find("equals no event"), std::string::npos);
+  LogContents repeated = log_of(Messages{});
+  repeated.records.insert(repeated.records.begin() + 6, repeated.records[6]);
+  EXPECT_NE(compare_bus_recording(log_of(Messages{}), repeated).defect.find("repeats or reorders"), std::string::npos);
+  LogContents swapped = log_of(Messages{});
+  std::swap(swapped.records[5], swapped.records[6]);
+  EXPECT_NE(compare_bus_recording(log_of(Messages{}), swapped).defect, "");
+  LogContents undecodable = log_of(Messages{});
+  undecodable.records[3].data[0] ^= 0x40;
+  EXPECT_NE(compare_bus_recording(log_of(Messages{}), undecodable).defect.find("does not decode"), std::string::npos);
+}
+
+TEST(BusRecording, BusStatusMessagesAreNeverCompared) {
+  LogContents b = log_of(Messages{});
+  bus_status_t s{};
+  s.run_id = "run-1";
+  s.messages_published = 7;
+  b.records.push_back(record(kChannelBus, s));
+  EXPECT_EQ(first_log_difference(log_of(Messages{}), b), "");
+  EXPECT_EQ(compare_bus_recording(log_of(Messages{}), b).defect, "");
+}
+
+}  // namespace
+}  // namespace robozoo
