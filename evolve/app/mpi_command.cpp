@@ -75,6 +75,8 @@ int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& ses
       session.abort(1);  // a rank may be hung in a job: end every rank now
     }
     if (!o.quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";
+    if (!o.quiet || opts.resume) std::cerr << session_line(*evo) << "\n";
+    if (!opts.lcm_url.empty()) std::cerr << bus_line(*evo) << "\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "robozoo-evolve: " << e.what() << "\n";
@@ -84,10 +86,7 @@ int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& ses
 
 int run_mpi_worker(const MpiSession& session) {
   try {
-    serve_mpi_session([](const std::string& setup) {
-      const RunConfig config = config_from_json(nlohmann::json::parse(setup));
-      return WorkFn([eval = config.eval](const Bytes& job) { return run_eval_job(job, eval); });
-    });
+    serve_mpi_session([](const std::string& setup) { return WorkFn(eval_work_from_setup(setup)); });
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "robozoo-evolve: rank " << session.rank() << " on " << session.host() << ": " << e.what()

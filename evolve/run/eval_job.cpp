@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "evolve/messages/build.hpp"
 #include "robozoo/eval_result_t.hpp"
 
@@ -83,6 +85,11 @@ EvalSummary decode_eval_result(const std::vector<uint8_t>& bytes) {
 std::vector<uint8_t> run_eval_job(const std::vector<uint8_t>& job, const EvalParams& params) {
   const Genome g = decode_eval_job(job, robot_layout());
   return encode_eval_result(summarize(g.id, evaluate(g, params)));
+}
+
+std::function<std::vector<uint8_t>(const std::vector<uint8_t>&)> eval_work_from_setup(const std::string& setup) {
+  const RunConfig config = config_from_json(nlohmann::json::parse(setup));
+  return [eval = config.eval](const std::vector<uint8_t>& job) { return run_eval_job(job, eval); };
 }
 
 }  // namespace robozoo

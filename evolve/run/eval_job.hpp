@@ -3,6 +3,8 @@
 // evolution process and its workers, whatever the transport (pipes to local
 // worker processes now, MPI ranks later). Pure functions.
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "evolve/config/run_config.hpp"
@@ -30,5 +32,10 @@ EvalSummary decode_eval_result(const std::vector<uint8_t>& bytes);
 
 /// The worker's whole job: decode, evaluate with `params`, encode.
 std::vector<uint8_t> run_eval_job(const std::vector<uint8_t>& job, const EvalParams& params);
+
+/// A worker rank's work function for a run whose resolved configuration is the
+/// JSON text `setup` (what MpiTransport::start sends): run_eval_job with its
+/// EvalParams. Throws ConfigError / nlohmann::json::exception for a bad setup.
+std::function<std::vector<uint8_t>(const std::vector<uint8_t>&)> eval_work_from_setup(const std::string& setup);
 
 }  // namespace robozoo
