@@ -5,10 +5,23 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cstring>
 #include <iostream>
+#include <memory>
+#include <sstream>
+#include <thread>
 
 #include "evolve/io/bus.hpp"
+#include "evolve/parallel/mpi/mpi_session.hpp"
+#include "evolve/parallel/mpi/mpi_transport.hpp"
+#include "evolve/parallel/mpi/mpi_worker.hpp"
+#include "evolve/run/eval_job.hpp"
+#include "evolve/run/pool_evaluator.hpp"
 #include "replay/check.hpp"
+#include "replay/full_check.hpp"
+#include "replay/live_check.hpp"
+#include "evolve/config/run_config.hpp"
+#include "evolve/run/stop_signals.hpp"
 #include "replay/live_sim.hpp"
 #include "replay/player.hpp"
 #include "evolve/core/version.hpp"
@@ -23,7 +36,84 @@ struct CheckArgs {
   double tolerance = 0.0;
   bool json = false, force = false, all = false, quiet = false, progress = false, no_progress = false;
   size_t keep = 20;
+  bool full = false;  ///< re-run the whole evolution and compare every message
+  std::string lcm_url;  ///< check --lcm-url: follow a live run instead of a log
+  double idle_exit = 0.0;
+  std::vector<std::string> sets;
+  int workers = 0;    ///< --full: worker processes (0: one per core)
+  int max_generations = -1;
 };
+
+/// --lcm-url: follow a run on the bus and check its champions as they come.
+int run_live_check(const CheckArgs& a) {
+  LiveCheckOptions o;
+  o.tolerance = a.tolerance;
+  o.force = a.force;
+  o.sets = a.sets;
+  o.keep = a.keep;
+  try {
+    for (const auto& kv : o.sets) config_assignment(kv);  // a bad assignment is said before the bus starts
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-replay: --set: " << e.what() << "\n";
+    return 2;
+  }
+  const std::function<bool()> should_stop = poll_interrupts();
+  std::ostringstream sink;
+  std::ostream& out = a.quiet ? static_cast<std::ostream&>(sink) : std::cout;
+  std::ostream& log = a.quiet ? static_cast<std::ostream&>(sink) : std::cerr;
+  try {
+    const LiveCheckSummary s = check_live(a.lcm_url, o, a.idle_exit, should_stop, out, log);
+    out << format_live_summary(s);
+    return s.exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "robozoo-replay: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+/// --full: the re-run, on local workers or (session) on the ranks of an MPI job.
+int run_full_check(const CheckArgs& a, const MpiSession* session) {
+  FullCheckOptions o;
+  o.force = a.force;
+  o.max_generations = a.max_generations;
+  const bool bar_on = !a.quiet && !a.no_progress && (a.progress || ::isatty(STDERR_FILENO));
+  ProgressBar bar(std::cerr, "re-running");
+  FullCheckProgress progress = [&](int done, int total, double elapsed) {
+    if (bar_on)
+      bar.update(done, total, elapsed);
+    else if (!a.quiet)
+      std::cerr << "robozoo-replay: check --full: " << progress_text("generation", done, total, elapsed, 20) << "\n";
+  };
+  const int workers = a.workers > 0 ? a.workers : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // Under MPI the transport exists before anything can fail: whichever way rank 0
+  // leaves, it releases the worker ranks.
+  std::unique_ptr<PoolEvaluator> evaluator;
+  MpiTransport* transport = nullptr;
+  if (session) {
+    auto owned = std::make_unique<MpiTransport>();
+    transport = owned.get();
+    evaluator = std::make_unique<PoolEvaluator>(std::move(owned));
+  }
+  EvaluatorFactory make = [&](const RunConfig& config) -> Evaluator& {
+    if (transport)
+      transport->start(config_to_json(config).dump());
+    else
+      evaluator = std::make_unique<PoolEvaluator>(workers, config.eval);
+    return *evaluator;
+  };
+  if (!a.quiet)
+    std::cerr << "robozoo-replay: check --full " << a.log << ": re-running its evolution on "
+              << (session ? std::to_string(session->size() - 1) + " MPI worker ranks"
+                          : std::to_string(workers) + " workers")
+              << " (this costs one evolution)\n";
+  const FullCheckReport report = full_check(a.log, make, o, progress);
+  bar.finish();
+  if (a.json)
+    std::cout << to_json(report).dump(2) << "\n";
+  else if (!a.quiet)
+    std::cout << format_full_text(report);
+  return report.exit_code();
+}
 
 struct PlayArgs {
   std::string log;
@@ -137,9 +227,36 @@ int run_sim(const SimArgs& a) {
   }
 }
 
+/// --mpi must be known before parsing: MPI starts first, so that only rank 0 speaks.
+bool wants_mpi(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--mpi") == 0) return true;
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::unique_ptr<MpiSession> session;
+  if (wants_mpi(argc, argv)) {
+    try {
+      session = std::make_unique<MpiSession>(&argc, &argv);
+    } catch (const std::exception& e) {
+      std::cerr << "robozoo-replay: --mpi: " << e.what() << "\n";
+      return 2;
+    }
+    if (session->rank() != 0) {
+      // A worker rank: evaluate rank 0's jobs with the logged run's configuration.
+      try {
+        serve_mpi_session([](const std::string& setup) { return WorkFn(eval_work_from_setup(setup)); });
+        return 0;
+      } catch (const std::exception& e) {
+        std::cerr << "robozoo-replay: rank " << session->rank() << " on " << session->host() << ": " << e.what()
+                  << "\n";
+        session->abort(1);
+      }
+    }
+  }
   CLI::App app{
       "robozoo-replay: re-grow and re-simulate the genomes of a robozoo log (written by robozoo-evolve or\n"
       "recorded by lcm-logger) with the same code and the configuration of the log's ROBOZOO_RUN."};
@@ -149,10 +266,25 @@ int main(int argc, char** argv) {
   CheckArgs c;
   CLI::App* check = app.add_subcommand(
       "check",
-      "Check every champion: grow it and compare the morphology field by field, re-simulate it and compare every "
-      "logged pose, re-evaluate it and compare the fitness. Exit 0: everything matches; 1: a divergence; 2: "
-      "unusable input.");
-  check->add_option("LOG", c.log, "the LCM log")->required();
+      "Check every champion: grow it and compare the morphology field by field, re-simulate it and prove its "
+      "pose stream (every step once, in order, bit for bit), re-evaluate it and compare the fitness; prove every "
+      "message in its place (one run_t first, one generation_t per generation with figures that agree). With "
+      "--full, re-run the whole evolution from the log's seed and configuration instead and compare every "
+      "message (utime and timings left out): that costs one evolution (--workers N, or mpirun -np N "
+      "robozoo-replay check --full --mpi LOG). Exit 0: everything matches; 1: a divergence; 2: unusable input.");
+  check->add_option("LOG", c.log, "the LCM log (not with --lcm-url)");
+  check->add_option("--lcm-url", c.lcm_url,
+                    "follow a live run on the bus instead (given alone: LCM's default URL) and check each champion "
+                    "as its generation completes; bus loss is reported apart from divergence")
+      ->expected(0, 1)
+      ->default_str(kDefaultLcmUrl);
+  check->add_option("--idle-exit", c.idle_exit, "--lcm-url: finish after this many seconds without a message (0: "
+                                                "at a signal only)")
+      ->check(CLI::NonNegativeNumber);
+  check->add_option("--set", c.sets,
+                    "--lcm-url: change a key of the run's configuration before re-computing (KEY=VALUE, as "
+                    "robozoo-evolve --set): what would differ under another setting")
+      ->take_all();
   check->add_option("--tolerance", c.tolerance,
                     "allowed error |a-b|/max(1,|a|,|b|) for logs made on another machine (default 0: bit for bit)")
       ->check(CLI::NonNegativeNumber);
@@ -164,6 +296,15 @@ int main(int argc, char** argv) {
   check->add_flag("--progress", c.progress, "show the progress bar even when stderr is not a terminal");
   check->add_flag("--no-progress", c.no_progress, "no progress bar");
   check->add_flag("--quiet,-q", c.quiet, "no output; the exit status only");
+  check->add_flag("--full", c.full,
+                  "re-run the whole evolution (seed and configuration of the log's ROBOZOO_RUN) and compare every "
+                  "message with the log; costs as much time as the run took to evolve");
+  check->add_option("--workers", c.workers, "--full: worker processes (default: one per core)")
+      ->check(CLI::Range(1, 4096));
+  check->add_option("--generations", c.max_generations, "--full: re-run at most this many generations")
+      ->check(CLI::Range(1, 1000000000));
+  bool mpi_flag = false;
+  check->add_flag("--mpi", mpi_flag, "--full: evaluate on the ranks of an MPI job (mpirun -np N, N >= 2)");
 
   PlayArgs p;
   CLI::App* playc = app.add_subcommand(
@@ -210,6 +351,42 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "robozoo-replay: " << e.what() << " (see --help)\n";
     return 2;
+  }
+  if (check->parsed() && check->count("--lcm-url")) {
+    if (c.lcm_url.empty()) c.lcm_url = kDefaultLcmUrl;
+    if (!c.log.empty() || c.full || c.all) {
+      std::cerr << "robozoo-replay: check --lcm-url follows the bus: no LOG, --full or --all-genomes\n";
+      return 2;
+    }
+    if (session) {
+      std::cerr << "robozoo-replay: --mpi is for check --full\n";
+      return 2;
+    }
+    return run_live_check(c);
+  }
+  if (check->parsed() && c.log.empty()) {
+    std::cerr << "robozoo-replay: check needs a LOG (or --lcm-url)\n";
+    return 2;
+  }
+  if (check->parsed() && (c.idle_exit > 0 || !c.sets.empty())) {
+    std::cerr << "robozoo-replay: --idle-exit and --set are for check --lcm-url\n";
+    return 2;
+  }
+  if (session && !(check->parsed() && c.full)) {
+    std::cerr << "robozoo-replay: --mpi is for check --full\n";
+    return 2;
+  }
+  if (check->parsed() && c.full) {
+    if (session && session->size() < 2) {
+      std::cerr << "robozoo-replay: --mpi needs at least 2 ranks (rank 0 compares, ranks 1.. evaluate)\n";
+      return 2;
+    }
+    if (c.tolerance > 0 || c.all) {
+      std::cerr << "robozoo-replay: --full compares every message bit for bit; --tolerance and --all-genomes do not "
+                   "apply\n";
+      return 2;
+    }
+    return run_full_check(c, session.get());
   }
   if (check->parsed()) return run_check(c);
   if (playc->parsed()) return run_play(p);
