@@ -45,6 +45,11 @@ XorPreset xor_preset(const std::string& name) {
     p.add_link = AddLinkRule::Tries;
     p.compatibility = CompatibilityRule::Classic;
     p.self_loops = true;  // classic NEAT's recurrent networks may loop on a node
+    // Stanley's NEAT C++ (xor_evaluate, Network::activate): unreached nodes output 0, networks
+    // relaxed, 0.5 counts as 1; evaluations counted up to the winner.
+    x.rules.stanley_activation = true;
+    x.rules.half_is_one = true;
+    x.count_to_solver = true;
     return x;
   }
   std::string names;

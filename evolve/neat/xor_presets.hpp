@@ -16,6 +16,7 @@
 
 #include "evolve/cppn/genome.hpp"
 #include "evolve/neat/params.hpp"
+#include "evolve/neat/xor_task.hpp"
 
 namespace robozoo {
 
@@ -28,6 +29,12 @@ struct XorPreset {
   uint32_t sigmoid_only = 0;
   /// The mask of "all three": the preset's sigmoid, signed cosine and Gaussian.
   uint32_t all_three = 0;
+  /// How networks are read (the neat-paper preset: Stanley's activation and winner test).
+  XorRules rules;
+  /// Evaluations counted up to and including the first solver of the solving generation, in
+  /// population order (the NEAT paper: networks evaluated until the solution; Stanley's
+  /// xor_test: pop_size x (generation - 1) + the winner's number). false: whole generations.
+  bool count_to_solver = false;
 };
 
 /// Names of the presets ("default", "neat-paper").
