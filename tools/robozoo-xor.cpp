@@ -154,10 +154,12 @@ int main(int argc, char** argv) {
       "project's NEAT: HyperNEAT's defaults and topology rules; output signed sigmoid mapped to "
       "(out+1)/2) and 'neat-paper' (the NEAT paper's own XOR parameters: steepened sigmoid "
       "1/(1+e^(-4.9x)), c1 = c2 = 1, c3 = 0.4, fixed threshold 3.0, classic add-node, disabled "
-      "genes inherited disabled with p 0.75, interspecies mating 0.001, classic topology rules). "
+      "genes inherited disabled with p 0.75, interspecies mating 0.001, classic topology rules, and "
+      "where the paper is silent the mechanics and XOR evaluation of Stanley's own NEAT C++). "
       "Inputs x1, x2 in {0,1} and bias 1.0; fitness (4 - sum|err|)^2; solved when all four patterns "
-      "are on the right side of 0.5. Evaluations to solve = genomes evaluated up to and including "
-      "the generation where a solution first appears."};
+      "are on the right side of 0.5. Evaluations to solve: default, genomes evaluated up to and "
+      "including the generation where a solution first appears; neat-paper, up to and including "
+      "the first solver (the NEAT paper's count). The JSON has both."};
   int runs = 100;
   int64_t seed = 1;
   int generations = 1000;
