@@ -51,6 +51,18 @@ FieldTable<NeatParams> neat_table() {
       .choice("weight_mutation", &NeatParams::weight_mutation, weight_mutation_rule_name,
               weight_mutation_rule_from_name)
       .real("weight_replace_probability", &NeatParams::weight_replace_probability, 0, 1)
+      .real("mate_average_probability", &NeatParams::mate_average_probability, 0, 1)
+      .real("mate_only_probability", &NeatParams::mate_only_probability, 0, 1)
+      .choice("crossover_rule", &NeatParams::crossover_rule, crossover_rule_name, crossover_rule_from_name)
+      .boolean("independent_parents", &NeatParams::independent_parents)
+      .boolean("keep_generation_champion", &NeatParams::keep_generation_champion)
+      .choice("stagnation", &NeatParams::stagnation, stagnation_rule_name, stagnation_rule_from_name)
+      .choice("offspring_rounding", &NeatParams::offspring_rounding, offspring_rounding_name,
+              offspring_rounding_from_name)
+      .integer("population_stagnation_generations", &NeatParams::population_stagnation_generations, 0, kBig)
+      .boolean("split_bias_links", &NeatParams::split_bias_links)
+      .boolean("structural_draw_decides", &NeatParams::structural_draw_decides)
+      .boolean("childless_species_stay", &NeatParams::childless_species_stay)
       .custom(
           "hidden_activations",
           [](const NeatParams& p) {

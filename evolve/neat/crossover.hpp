@@ -17,6 +17,15 @@ namespace robozoo {
 /// no draw is made and the chosen gene is copied as it is (HyperNEAT).
 Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
                  const NeatParams& p, Rng& rng);
+/// The same, and with `average_weights` (Stanley's mate_multipoint_avg) every matching gene is
+/// the fitter parent's gene with the mean of both parents' weights, enabled (no parent draw).
+/// With p.crossover_rule == CrossoverRule::Stanley: on equal fitness the parent with fewer link
+/// genes is the fitter (b when both have as many); disjoint and excess genes keep their enabled
+/// flags; a matching gene disabled in either parent is inherited disabled with
+/// p.disabled_gene_probability (one draw per such gene), else it keeps the chosen gene's flag
+/// (copied) or is enabled (averaged).
+Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
+                 const NeatParams& p, bool average_weights, Rng& rng);
 /// The same with disabled_gene_probability 0.
 Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, Rng& rng);
 

@@ -81,6 +81,12 @@ std::vector<Activation> allowed_activations(uint32_t mask) {
   return v;
 }
 
+NodeKind node_kind_of(const Genome& g, int32_t id) {
+  const int i = node_index(g, id);
+  if (i < 0) throw std::logic_error("genome " + std::to_string(g.id) + ": no node " + std::to_string(id));
+  return g.nodes[static_cast<size_t>(i)].kind;
+}
+
 }  // namespace
 
 bool link_allowed(const Genome& g, const NodeGene& from, const NodeGene& to, Regime regime,
@@ -147,6 +153,7 @@ bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
     const LinkGene& l = g.links[i];
     if (!l.enabled || l.from == l.to) continue;
     if (p.add_node == AddNodeRule::HyperNeat && !is_forward_link(g, l)) continue;
+    if (!p.split_bias_links && node_kind_of(g, l.from) == NodeKind::Bias) continue;
     splittable.push_back(i);
   }
   if (splittable.empty()) return false;
@@ -176,6 +183,32 @@ bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
 }
 
 void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng) {
+  if (p.weight_mutation == WeightMutationRule::Stanley) {
+    // Stanley's mutate_link_weights(power, rate 1, GAUSSIAN). One draw u per link: perturbed
+    // when u > perturb_above, replaced when perturb_above >= u > replace_above, else kept.
+    const bool severe = rng.bernoulli(kStanleySevereProbability);
+    const size_t n = g.links.size();
+    const double tail_start = 0.8 * static_cast<double>(n);  // links past it are the newest
+    const double power = p.weight_perturbation;
+    for (size_t i = 0; i < n; ++i) {
+      LinkGene& l = g.links[i];
+      const bool tail = n >= 10 && static_cast<double>(i) > tail_start;
+      const double delta = rng.uniform(-power, power);
+      if (severe || tail) {
+        const double perturb_above = severe ? 0.3 : 0.5;  // severe: 70 % perturbed; tail: 50 %
+        const double replace_above = severe ? 0.1 : 0.3;  // both: 20 % replaced
+        const double u = rng.uniform();
+        if (u > perturb_above)
+          l.weight += delta;
+        else if (u > replace_above)
+          l.weight = delta;
+      } else {
+        l.weight += delta;  // rate 1: every other link is perturbed
+      }
+      l.weight = std::clamp(l.weight, -p.weight_limit, p.weight_limit);
+    }
+    return;
+  }
   for (auto& l : g.links) {
     if (p.weight_mutation == WeightMutationRule::Classic) {
       if (rng.bernoulli(p.weight_replace_probability))
@@ -195,9 +228,11 @@ void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng
 
 void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
             InnovationTracker& innov, int32_t generation, Rng& rng) {
-  if (rng.bernoulli(p.add_node_probability) && mutate_add_node(g, p, innov, generation, rng)) return;
+  if (rng.bernoulli(p.add_node_probability) &&
+      (mutate_add_node(g, p, innov, generation, rng) || p.structural_draw_decides))
+    return;
   if (rng.bernoulli(p.add_link_probability) &&
-      mutate_add_link(g, regime, layout, p, innov, generation, rng))
+      (mutate_add_link(g, regime, layout, p, innov, generation, rng) || p.structural_draw_decides))
     return;
   if (rng.bernoulli(p.mutate_weights_probability)) mutate_weights(g, p, generation, rng);
 }

@@ -31,7 +31,9 @@ bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const
 
 /// Splits a link a -> b chosen uniformly among the enabled links other than
 /// self-loops; with AddNodeRule::HyperNeat among the enabled *forward* links
-/// only. A new hidden node h, at the mean of a's and b's drawing positions,
+/// only; without p.split_bias_links never a link from the bias input (Stanley's
+/// 20 random tries among all link genes, taken as the uniform choice among those
+/// they may accept). A new hidden node h, at the mean of a's and b's drawing positions,
 /// gets an activation drawn uniformly from p.hidden_activations (the first such
 /// split of the generation fixes it, see InnovationTracker); a -> h gets weight
 /// 1. HyperNeat: the old link stays enabled with its weight halved (w/2) and
@@ -42,6 +44,9 @@ bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const
 bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
                      int32_t generation, Rng& rng);
 
+/// Stanley's weight mutation: the probability that one call is "severe".
+inline constexpr double kStanleySevereProbability = 0.5;
+
 /// WeightMutationRule::HyperNeat: every link gene (enabled or not) younger than
 /// p.young_link_age generations (generation - born < young_link_age) is
 /// perturbed; an older one with probability p.old_link_perturb_probability.
@@ -49,12 +54,19 @@ bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
 /// [-initial_weight_range, initial_weight_range) with probability
 /// p.weight_replace_probability, else perturbed. Perturbation: add uniform
 /// [-weight_perturbation, weight_perturbation); then clamp to [-weight_limit, weight_limit].
+/// Stanley (his NEAT C++): one draw decides whether the call is severe (probability
+/// kStanleySevereProbability); then per link gene, in innovation order, a perturbation d
+/// uniform in [-weight_perturbation, weight_perturbation) and, for a severe call or a link in
+/// the tail (at least 10 genes, index > 0.8 x count), a draw u: w += d when u > 0.3 (severe) /
+/// 0.5 (tail), w = d when u > 0.1 / 0.3, else w kept; any other link w += d. Then clamp.
 void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng);
 
 /// The mutation an offspring gets (the NEAT paper's order, one structural
 /// change at most): with p.add_node_probability add a node; if none was added,
 /// with p.add_link_probability add a link; if the structure did not change,
-/// with p.mutate_weights_probability mutate the weights.
+/// with p.mutate_weights_probability mutate the weights. With
+/// p.structural_draw_decides (Stanley), an add-node or add-link whose draw
+/// succeeded ends the mutation even when it found nothing to add.
 void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
             InnovationTracker& innov, int32_t generation, Rng& rng);
 

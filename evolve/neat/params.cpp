@@ -29,7 +29,19 @@ std::string compatibility_rule_name(CompatibilityRule r) {
 }
 
 std::string weight_mutation_rule_name(WeightMutationRule r) {
-  return r == WeightMutationRule::HyperNeat ? "hyperneat" : "classic";
+  switch (r) {
+    case WeightMutationRule::HyperNeat: return "hyperneat";
+    case WeightMutationRule::Classic: return "classic";
+    case WeightMutationRule::Stanley: return "stanley";
+  }
+  return "unknown";
+}
+std::string crossover_rule_name(CrossoverRule r) { return r == CrossoverRule::Robozoo ? "robozoo" : "stanley"; }
+std::string stagnation_rule_name(StagnationRule r) {
+  return r == StagnationRule::HyperNeat ? "hyperneat" : "stanley";
+}
+std::string offspring_rounding_name(OffspringRounding r) {
+  return r == OffspringRounding::LargestRemainder ? "largest_remainder" : "skim";
 }
 
 LinkRule link_rule_from_name(const std::string& s) {
@@ -51,8 +63,19 @@ CompatibilityRule compatibility_rule_from_name(const std::string& s) {
 }
 
 WeightMutationRule weight_mutation_rule_from_name(const std::string& s) {
-  return from_name(s, {WeightMutationRule::HyperNeat, WeightMutationRule::Classic}, weight_mutation_rule_name,
-                   "weight-mutation rule");
+  return from_name(s, {WeightMutationRule::HyperNeat, WeightMutationRule::Classic, WeightMutationRule::Stanley},
+                   weight_mutation_rule_name, "weight-mutation rule");
+}
+CrossoverRule crossover_rule_from_name(const std::string& s) {
+  return from_name(s, {CrossoverRule::Robozoo, CrossoverRule::Stanley}, crossover_rule_name, "crossover rule");
+}
+StagnationRule stagnation_rule_from_name(const std::string& s) {
+  return from_name(s, {StagnationRule::HyperNeat, StagnationRule::Stanley}, stagnation_rule_name,
+                   "stagnation rule");
+}
+OffspringRounding offspring_rounding_from_name(const std::string& s) {
+  return from_name(s, {OffspringRounding::LargestRemainder, OffspringRounding::Skim}, offspring_rounding_name,
+                   "offspring rounding");
 }
 
 }  // namespace robozoo

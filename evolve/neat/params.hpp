@@ -36,6 +36,45 @@ enum class AddNodeRule : int8_t {
 enum class WeightMutationRule : int8_t {
   HyperNeat = 0,  ///< links younger than young_link_age always perturbed, older ones with old_link_perturb_probability
   Classic = 1,    ///< the NEAT paper: every link; replaced by a new random value with weight_replace_probability, else perturbed
+  /// Stanley's NEAT C++ (mutate_link_weights, rate 1): one call in two is "severe" (each link
+  /// 70 % perturbed, 20 % replaced, 10 % kept); otherwise, in a genome of at least 10 link genes,
+  /// the links past 80 % of the list (the newest) 50 % perturbed, 20 % replaced, 30 % kept, and
+  /// every other link perturbed. Replacement values, like perturbations, are uniform in
+  /// [-weight_perturbation, weight_perturbation).
+  Stanley = 2,
+};
+/// How crossover treats the enabled flag, and which parent is the fitter on a tie.
+enum class CrossoverRule : int8_t {
+  /// A gene disabled in either parent, matching or not, is inherited disabled with
+  /// disabled_gene_probability, else enabled; on equal fitness the first parent is the fitter.
+  Robozoo = 0,
+  /// Stanley's mate_multipoint / mate_multipoint_avg: only a matching gene disabled in either
+  /// parent is inherited disabled with disabled_gene_probability; otherwise a copied matching
+  /// gene keeps its own flag and an averaged one is enabled; disjoint and excess genes keep
+  /// their flags. On equal fitness the parent with fewer link genes is the fitter (the second
+  /// when both have as many).
+  Stanley = 1,
+};
+/// When a species counts as stagnant (its shared fitness then times dropoff_factor).
+enum class StagnationRule : int8_t {
+  /// This generation's improvement is recorded first, the generation champion's species always
+  /// counts as improved (HyperNEAT), and a species is stagnant dropoff_age generations after its
+  /// last improvement.
+  HyperNeat = 0,
+  /// Stanley's Species::adjust_fitness: checked before this generation's improvement is recorded,
+  /// no exemption for the champion's species, and stagnant from dropoff_age - 1 generations after
+  /// the last improvement on (his age_debt of 0 is counted as 1).
+  Stanley = 1,
+};
+/// How the population's offspring are divided among species.
+enum class OffspringRounding : int8_t {
+  /// Proportional to the species' shares, largest remainders first (allocate_offspring).
+  LargestRemainder = 0,
+  /// Stanley's count_offspring: every member expects (its shared fitness) / (the population's
+  /// mean shared fitness) offspring; walking species and members in order, whole parts are given
+  /// at once and fractions carried over ("skim"), one more offspring whenever the carry exceeds 1;
+  /// a shortfall goes to the species expecting the most (allocate_offspring_skim).
+  Skim = 1,
 };
 /// How the compatibility distance counts unmatched genes.
 enum class CompatibilityRule : int8_t {
@@ -48,7 +87,10 @@ std::string initial_links_name(InitialLinks r);          ///< "all_allowed" / "i
 std::string add_link_rule_name(AddLinkRule r);           ///< "uniform" / "tries"
 std::string add_node_rule_name(AddNodeRule r);           ///< "hyperneat" / "classic"
 std::string compatibility_rule_name(CompatibilityRule r);///< "hyperneat" / "classic"
-std::string weight_mutation_rule_name(WeightMutationRule r);  ///< "hyperneat" / "classic"
+std::string weight_mutation_rule_name(WeightMutationRule r);  ///< "hyperneat" / "classic" / "stanley"
+std::string crossover_rule_name(CrossoverRule r);        ///< "robozoo" / "stanley"
+std::string stagnation_rule_name(StagnationRule r);      ///< "hyperneat" / "stanley"
+std::string offspring_rounding_name(OffspringRounding r);///< "largest_remainder" / "skim"
 /// Inverses of the *_name functions; throw std::invalid_argument listing the names.
 LinkRule link_rule_from_name(const std::string& s);
 InitialLinks initial_links_from_name(const std::string& s);
@@ -56,6 +98,9 @@ AddLinkRule add_link_rule_from_name(const std::string& s);
 AddNodeRule add_node_rule_from_name(const std::string& s);
 CompatibilityRule compatibility_rule_from_name(const std::string& s);
 WeightMutationRule weight_mutation_rule_from_name(const std::string& s);
+CrossoverRule crossover_rule_from_name(const std::string& s);
+StagnationRule stagnation_rule_from_name(const std::string& s);
+OffspringRounding offspring_rounding_from_name(const std::string& s);
 
 struct NeatParams {
   int population = 150;                  ///< genomes per generation (count)
@@ -98,6 +143,50 @@ struct NeatParams {
   /// Activation functions a new hidden node may get, as a bit mask over Activation
   /// codes: default signed sigmoid, signed cosine and Gaussian (bits 0, 1, 2).
   uint32_t hidden_activations = 0b111;
+
+  // Mechanics of Stanley's own NEAT C++ (NEAT 1.2.1: genome.cpp, species.cpp, population.cpp;
+  // the code behind the NEAT paper's XOR figures, parameter file p2nv.ne). Every default below
+  // leaves robozoo's NEAT exactly as it was; robozoo-xor's neat-paper preset switches them on.
+  /// Crossover: probability that a mated offspring gets the mean of its parents' weights at
+  /// every matching gene (Stanley's mate_multipoint_avg, mate_multipoint_avg_prob 0.4) instead of
+  /// each matching gene copied from a parent drawn with probability 1/2 (mate_multipoint, 0.6).
+  /// Probability; 0: never (no draw is made).
+  double mate_average_probability = 0.0;
+  /// Probability that a mated offspring is not mutated at all (Stanley's mate_only_prob 0.2),
+  /// unless both parents are the same genome or at compatibility distance 0. Probability; 0:
+  /// every offspring is mutated (no draw is made).
+  double mate_only_probability = 0.0;
+  /// How crossover treats enabled flags and fitness ties (see CrossoverRule).
+  CrossoverRule crossover_rule = CrossoverRule::Robozoo;
+  /// The second parent of a mating within the species is drawn from the parents independently
+  /// of the first, so a genome may mate with itself (Stanley: mom and dad are two independent
+  /// draws; such an offspring is always mutated). false: two different parents.
+  bool independent_parents = false;
+  /// true (HyperNEAT): the next generation starts with an unchanged copy of the generation
+  /// champion, and the champion's species gets at least one offspring. false (Stanley): the
+  /// champion survives only as its species' champion copy (species_elitism_min_offspring).
+  bool keep_generation_champion = true;
+  /// When a species is stagnant (see StagnationRule).
+  StagnationRule stagnation = StagnationRule::HyperNeat;
+  /// How offspring are divided among species (see OffspringRounding).
+  OffspringRounding offspring_rounding = OffspringRounding::LargestRemainder;
+  /// Population-level stagnation (Stanley's delta coding): when the population's best raw fitness
+  /// has not beaten its record for this many generations (Stanley: dropoff_age + 5 = 20), only
+  /// the two species with the best champions reproduce, half the population each, all from their
+  /// champion: every offspring but the last a mutated copy (weights mutated with probability 0.8,
+  /// else a link added), the last an unchanged copy; their last improvement is set to now and the
+  /// count starts again. Generations; 0: off.
+  int population_stagnation_generations = 0;
+  /// false (Stanley's mutate_add_node): add-node never splits a link that leaves the bias input.
+  bool split_bias_links = true;
+  /// true (Stanley): once the add-node (or add-link) draw succeeds, the offspring gets that
+  /// mutation only, even when it finds nothing to add; false: a failed structural mutation falls
+  /// through to the next one (see mutate()).
+  bool structural_draw_decides = false;
+  /// true (Stanley): a species allotted no offspring stays a candidate when the new generation
+  /// is speciated (represented by its champion) and lives on if another species' offspring
+  /// joins it; false: it dies at once.
+  bool childless_species_stay = false;
 };
 
 }  // namespace robozoo

@@ -9,6 +9,10 @@
 namespace robozoo {
 namespace {
 
+// Stanley's Species::reproduce, population-level stagnation: the probability that a mutated copy
+// of a champion gets its weights mutated (else a new link).
+constexpr double kChampionWeightMutationProbability = 0.8;
+
 [[noreturn]] void bad(const std::string& key, const std::string& what) {
   throw std::invalid_argument("neat." + key + ": " + what);
 }
@@ -51,6 +55,11 @@ void validate_neat_params(const NeatParams& p) {
   if (p.add_link_tries < 0) bad("add_link_tries", "must be >= 0, got " + std::to_string(p.add_link_tries));
   probability("disabled_gene_probability", p.disabled_gene_probability);
   probability("weight_replace_probability", p.weight_replace_probability);
+  probability("mate_average_probability", p.mate_average_probability);
+  probability("mate_only_probability", p.mate_only_probability);
+  if (p.population_stagnation_generations < 0)
+    bad("population_stagnation_generations",
+        "must be >= 0, got " + std::to_string(p.population_stagnation_generations));
   const uint32_t valid_bits = (1u << kNumActivations) - 1u;
   if (p.hidden_activations == 0 || (p.hidden_activations & ~valid_bits) != 0)
     bad("hidden_activations", "must be a non-empty mask of activation codes 0.." +
@@ -106,6 +115,9 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
     fail("compatibility threshold must be finite and > 0");
   if (!(s_.speciation_threshold > 0.0) || !std::isfinite(s_.speciation_threshold))
     fail("speciation threshold must be finite and > 0");
+  if (!(s_.record_fitness >= 0.0) || !std::isfinite(s_.record_fitness))
+    fail("record fitness must be finite and >= 0");
+  if (s_.generations_since_record < 0) fail("generations since the record must be >= 0");
   int64_t max_innovation = -1, max_id = -1;
   int32_t max_node = layout_.first_hidden() - 1;
   for (const auto& g : s_.genomes) {
@@ -177,22 +189,85 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
   rep.generation = gen;
   rep.champion = champ;
   rep.champion_fitness = fitness[champ];
+  const bool stanley_stagnation = params_.stagnation == StagnationRule::Stanley;
   std::vector<double> sizes;
   for (size_t si = 0; si < species.size(); ++si) {
     Species& sp = species[si];
     const double best = fitness[static_cast<size_t>(sp.members.front())];
-    if (best > sp.best_fitness) {
-      sp.best_fitness = best;
-      sp.last_improvement = gen;
+    bool stagnant;
+    if (stanley_stagnation) {
+      // Stanley: judged before this generation's improvement is recorded; his age debt of 0
+      // counts as 1, so the penalty starts dropoff_age - 1 generations after the improvement.
+      stagnant = gen - sp.last_improvement >= params_.dropoff_age - 1;
+      if (best > sp.best_fitness) {
+        sp.best_fitness = best;
+        sp.last_improvement = gen;
+      }
+    } else {
+      if (best > sp.best_fitness) {
+        sp.best_fitness = best;
+        sp.last_improvement = gen;
+      }
+      if (si == champ_si) sp.last_improvement = gen;
+      stagnant = is_stagnant(sp, gen, params_);
     }
-    if (si == champ_si) sp.last_improvement = gen;
     rep.species_ids.push_back(sp.id);
-    rep.stagnant.push_back(is_stagnant(sp, gen, params_));
-    rep.adjusted.push_back(species_adjusted_fitness(sp, fitness, gen, params_));
-    sizes.push_back(static_cast<double>(sp.members.size()));
+    rep.stagnant.push_back(stagnant);
+    double shared = 0.0;
+    const double size = static_cast<double>(sp.members.size());
+    for (int m : sp.members) shared += fitness[static_cast<size_t>(m)] / size;
+    rep.adjusted.push_back(stagnant ? shared * params_.dropoff_factor : shared);
+    sizes.push_back(size);
   }
-  std::vector<int> counts = allocate_offspring(rep.adjusted, static_cast<int>(n), sizes);
-  if (counts[champ_si] == 0) {
+  const bool any_share = std::any_of(rep.adjusted.begin(), rep.adjusted.end(), [](double a) { return a > 0.0; });
+  std::vector<int> counts;
+  if (params_.offspring_rounding == OffspringRounding::Skim && any_share) {
+    std::vector<std::vector<double>> values(species.size());
+    for (size_t si = 0; si < species.size(); ++si) {
+      const double size = sizes[si];
+      for (int m : species[si].members) {
+        const double f = fitness[static_cast<size_t>(m)];
+        values[si].push_back((rep.stagnant[si] ? f * params_.dropoff_factor : f) / size);
+      }
+    }
+    counts = allocate_offspring_skim(values, static_cast<int>(n));
+  } else {
+    counts = allocate_offspring(rep.adjusted, static_cast<int>(n), sizes);
+  }
+  // Population-level stagnation (Stanley's delta coding): the two species with the best
+  // champions get half the population each, all from their champions.
+  std::vector<char> from_champion(species.size(), 0);
+  if (params_.population_stagnation_generations > 0) {
+    if (fitness[champ] > s_.record_fitness) {
+      s_.record_fitness = fitness[champ];
+      s_.generations_since_record = 0;
+    } else {
+      ++s_.generations_since_record;
+    }
+    if (s_.generations_since_record >= params_.population_stagnation_generations) {
+      s_.generations_since_record = 0;
+      rep.population_stagnation = true;
+      std::vector<size_t> order(species.size());
+      for (size_t si = 0; si < order.size(); ++si) order[si] = si;
+      std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) {
+        return fitness[static_cast<size_t>(species[x].members.front())] >
+               fitness[static_cast<size_t>(species[y].members.front())];
+      });
+      std::fill(counts.begin(), counts.end(), 0);
+      const int half = static_cast<int>(n) / 2;
+      // With one species only it gets the whole population (Stanley's code gives it n - n/2,
+      // which would shrink the population).
+      const size_t top = order.size() >= 2 ? 2 : 1;
+      for (size_t k = 0; k < top; ++k) {
+        const size_t si = order[k];
+        counts[si] = top == 1 ? static_cast<int>(n) : (k == 0 ? half : static_cast<int>(n) - half);
+        from_champion[si] = 1;
+        species[si].last_improvement = gen;
+      }
+    }
+  }
+  const bool keep_champion = params_.keep_generation_champion;
+  if (keep_champion && counts[champ_si] == 0) {
     const size_t donor = static_cast<size_t>(std::max_element(counts.begin(), counts.end()) - counts.begin());
     --counts[donor];
     ++counts[champ_si];
@@ -209,13 +284,32 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
     c.id = s_.next_genome_id++;
     next.push_back(std::move(c));
   };
-  copy_unchanged(champ);
+  if (keep_champion) copy_unchanged(champ);
   for (size_t si = 0; si < species.size(); ++si) {
     const Species& sp = species[si];
     int remaining = counts[si];
-    if (si == champ_si) {
-      --remaining;  // the generation champion is this species' unchanged copy
-    } else if (remaining >= params_.species_elitism_min_offspring) {
+    const bool champion_copied = keep_champion && si == champ_si;
+    if (champion_copied) --remaining;  // the generation champion is this species' unchanged copy
+    if (from_champion[si]) {
+      // Every offspring a mutated copy of the champion (weights with probability 0.8, else a new
+      // link), the last an unchanged copy unless the generation champion's copy is already made.
+      const size_t c = static_cast<size_t>(sp.members.front());
+      for (int k = 0; k < remaining; ++k) {
+        if (k == remaining - 1 && !champion_copied) {
+          copy_unchanged(c);
+          continue;
+        }
+        Genome child = s_.genomes[c];
+        child.id = s_.next_genome_id++;
+        if (params_.add_link_probability == 0.0 || rng.bernoulli(kChampionWeightMutationProbability))
+          mutate_weights(child, params_, child_gen, rng);
+        else
+          mutate_add_link(child, regime_, layout_, params_, tracker, child_gen, rng);
+        next.push_back(std::move(child));
+      }
+      continue;
+    }
+    if (!champion_copied && remaining >= params_.species_elitism_min_offspring) {
       copy_unchanged(static_cast<size_t>(sp.members.front()));
       --remaining;
     }
@@ -224,23 +318,34 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
       Genome child;
       const size_t pa = rng.index(static_cast<size_t>(np));
       const size_t a = static_cast<size_t>(sp.members[pa]);
+      size_t b = a;
+      bool mated = false;
       if (np == 1 || rng.bernoulli(params_.mutate_only_probability)) {
         child = s_.genomes[a];
       } else {
-        size_t b;
+        mated = true;
         if (species.size() > 1 && rng.bernoulli(params_.interspecies_mating_probability)) {
           size_t other = rng.index(species.size() - 1);
           if (other >= si) ++other;
           b = static_cast<size_t>(species[other].members.front());
+        } else if (params_.independent_parents) {
+          b = static_cast<size_t>(sp.members[rng.index(static_cast<size_t>(np))]);
         } else {
           size_t pb = rng.index(static_cast<size_t>(np - 1));
           if (pb >= pa) ++pb;
           b = static_cast<size_t>(sp.members[pb]);
         }
-        child = crossover(s_.genomes[a], fitness[a], s_.genomes[b], fitness[b], params_, rng);
+        const bool average =
+            params_.mate_average_probability > 0.0 && rng.bernoulli(params_.mate_average_probability);
+        child = crossover(s_.genomes[a], fitness[a], s_.genomes[b], fitness[b], params_, average, rng);
       }
       child.id = s_.next_genome_id++;
-      mutate(child, regime_, layout_, params_, tracker, child_gen, rng);
+      // Stanley: a mated offspring stays unmutated with mate_only_probability, unless its parents
+      // are one genome or identical in the compatibility distance's eyes.
+      const bool mate_only = mated && params_.mate_only_probability > 0.0 &&
+                             rng.bernoulli(params_.mate_only_probability) && a != b &&
+                             compatibility_distance(s_.genomes[a], s_.genomes[b], params_) != 0.0;
+      if (!mate_only) mutate(child, regime_, layout_, params_, tracker, child_gen, rng);
       next.push_back(std::move(child));
     }
   }
@@ -252,7 +357,7 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
   // champion of this generation. Then the new generation is speciated.
   std::vector<Species> surviving;
   for (size_t si = 0; si < species.size(); ++si) {
-    if (counts[si] == 0) continue;
+    if (counts[si] == 0 && !params_.childless_species_stay) continue;
     Species sp = std::move(species[si]);
     sp.representative = s_.genomes[static_cast<size_t>(sp.members.front())];
     sp.age += 1;

@@ -28,6 +28,17 @@
 //     just evaluated; the new generation is speciated in order against them
 //     (NEAT speciates offspring as they are born), then the threshold adjusted.
 // Copies get fresh ids: every genome of a run has its own id, increasing.
+//
+// Options that follow Stanley's own NEAT C++ instead (all off by default; see
+// params.hpp): crossover_rule, mate_average_probability, mate_only_probability
+// and independent_parents change step 4's matings; keep_generation_champion =
+// false drops the generation champion's copy and its species' guaranteed
+// offspring; stagnation = stanley decides stagnation before this generation's
+// improvement, with no exemption; offspring_rounding = skim divides offspring by
+// carried fractions; population_stagnation_generations > 0 lets only the two
+// best species reproduce, from their champions, after that many generations
+// without a new population record; childless_species_stay keeps a species
+// without offspring as a speciation candidate in step 5.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -59,8 +70,14 @@ struct PopulationState {
   std::vector<Genome> genomes;
   std::vector<int32_t> species_of;  ///< species id of each genome (after speciation)
   std::vector<Species> species;
+  /// Population-level stagnation (neat.population_stagnation_generations > 0 only; else both
+  /// stay 0): the best raw fitness the population has reached (fitness units) and the
+  /// generations since it was last beaten (count).
+  double record_fitness = 0.0;
+  int32_t generations_since_record = 0;
   bool operator==(const PopulationState& o) const {
     return generation == o.generation && next_genome_id == o.next_genome_id &&
+           record_fitness == o.record_fitness && generations_since_record == o.generations_since_record &&
            next_innovation == o.next_innovation && next_node_id == o.next_node_id &&
            next_species_id == o.next_species_id &&
            compatibility_threshold == o.compatibility_threshold &&
@@ -78,6 +95,8 @@ struct GenerationReport {
   std::vector<double> adjusted;       ///< each species' shared (and dropped-off) fitness
   std::vector<int> offspring;         ///< offspring allocated to each species (sum = population)
   std::vector<bool> stagnant;         ///< whether each species was stagnant
+  /// Population-level stagnation struck: only the two best species reproduced, from their champions.
+  bool population_stagnation = false;
 };
 
 class Population {

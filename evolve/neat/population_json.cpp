@@ -155,16 +155,23 @@ json population_state_to_json(const PopulationState& s) {
   for (const auto& g : s.genomes) genomes.push_back(genome_to_json(g));
   json species = json::array();
   for (const auto& sp : s.species) species.push_back(species_to_json(sp));
-  return {{"generation", s.generation},
-          {"next_genome_id", s.next_genome_id},
-          {"next_innovation", s.next_innovation},
-          {"next_node_id", s.next_node_id},
-          {"next_species_id", s.next_species_id},
-          {"compatibility_threshold", s.compatibility_threshold},
-          {"speciation_threshold", s.speciation_threshold},
-          {"genomes", std::move(genomes)},
-          {"species_of", s.species_of},
-          {"species", std::move(species)}};
+  json j = {{"generation", s.generation},
+            {"next_genome_id", s.next_genome_id},
+            {"next_innovation", s.next_innovation},
+            {"next_node_id", s.next_node_id},
+            {"next_species_id", s.next_species_id},
+            {"compatibility_threshold", s.compatibility_threshold},
+            {"speciation_threshold", s.speciation_threshold},
+            {"genomes", std::move(genomes)},
+            {"species_of", s.species_of},
+            {"species", std::move(species)}};
+  // Population-level stagnation's record, written only when it is in use (non-zero), so states
+  // of runs without it read and write as before.
+  if (s.record_fitness != 0.0 || s.generations_since_record != 0) {
+    j["record_fitness"] = s.record_fitness;
+    j["generations_since_record"] = s.generations_since_record;
+  }
+  return j;
 }
 
 PopulationState population_state_from_json(const json& j, const std::string& path) {
@@ -186,6 +193,10 @@ PopulationState population_state_from_json(const json& j, const std::string& pat
   const std::string sp = path + ".species";
   const json& species = as_array(field(j, "species", path), sp);
   for (size_t i = 0; i < species.size(); ++i) s.species.push_back(species_from_json(species[i], at(sp, i)));
+  if (j.contains("record_fitness"))
+    s.record_fitness = as_double(j["record_fitness"], path + ".record_fitness");
+  if (j.contains("generations_since_record"))
+    s.generations_since_record = as_i32(j["generations_since_record"], path + ".generations_since_record");
   return s;
 }
 

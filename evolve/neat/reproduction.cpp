@@ -76,6 +76,59 @@ std::vector<int> allocate_offspring(const std::vector<double>& shares, int total
   return counts;
 }
 
+std::vector<int> allocate_offspring_skim(const std::vector<std::vector<double>>& member_values, int total) {
+  if (total < 0) throw std::invalid_argument("allocate_offspring_skim: negative total " + std::to_string(total));
+  double sum = 0.0;
+  size_t members = 0;
+  for (const auto& species : member_values)
+    for (double v : species) {
+      if (!std::isfinite(v) || v < 0.0)
+        throw std::invalid_argument("allocate_offspring_skim: values must be finite and >= 0, got " +
+                                    std::to_string(v));
+      sum += v;
+      ++members;
+    }
+  if (!(sum > 0.0)) throw std::invalid_argument("allocate_offspring_skim: no member has a positive value");
+  const double mean = sum / static_cast<double>(members);
+  std::vector<int> counts(member_values.size(), 0);
+  double skim = 0.0;
+  int given = 0;
+  for (size_t s = 0; s < member_values.size(); ++s) {
+    for (double v : member_values[s]) {
+      const double expected = v / mean;
+      const double whole = std::floor(expected);
+      counts[s] += static_cast<int>(whole);
+      skim += std::fmod(expected, 1.0);
+      if (skim > 1.0) {
+        const double carried = std::floor(skim);
+        counts[s] += static_cast<int>(carried);
+        skim -= carried;
+      }
+    }
+    given += counts[s];
+  }
+  if (given < total && !counts.empty()) {
+    size_t best = 0;
+    int most = 0;
+    for (size_t s = 0; s < counts.size(); ++s)
+      if (counts[s] >= most) {
+        most = counts[s];
+        best = s;
+      }
+    ++counts[best];
+    if (++given < total) {
+      std::fill(counts.begin(), counts.end(), 0);
+      counts[best] = total;
+      given = total;
+    }
+  }
+  while (given > total) {
+    --counts[static_cast<size_t>(std::max_element(counts.begin(), counts.end()) - counts.begin())];
+    --given;
+  }
+  return counts;
+}
+
 int num_parents(int species_size, const NeatParams& p) {
   if (species_size <= 0) return 0;
   const int n = static_cast<int>(std::floor(p.survival_threshold * species_size)) + 1;

@@ -25,6 +25,19 @@ double species_adjusted_fitness(const Species& s, const std::vector<double>& fit
 std::vector<int> allocate_offspring(const std::vector<double>& shares, int total,
                                     const std::vector<double>& fallback);
 
+/// Stanley's count_offspring (OffspringRounding::Skim). member_values[s][k]: the shared
+/// fitness of member k of species s (raw fitness, times the drop-off factor when the species is
+/// stagnant, divided by the species' size), species in population order, members in rank order.
+/// Every member expects value / mean offspring, the mean taken over all members; walking the
+/// species and their members in order, a member's whole part goes to its species at once and its
+/// fractional part is added to a carry that runs across species; whenever the carry exceeds 1 its
+/// whole part goes to the species of the member that made it do so. If the counts fall short of
+/// `total`, the species with the most (the last of equals) gets one more, and if still short it
+/// gets all `total` (Stanley's "population died"); counts above `total` (only by rounding error)
+/// are taken from the largest. Throws std::invalid_argument when a value is negative or not
+/// finite, or no value is positive.
+std::vector<int> allocate_offspring_skim(const std::vector<std::vector<double>>& member_values, int total);
+
 /// How many of a species' best members may reproduce:
 /// floor(survival_threshold * size) + 1, at most size.
 int num_parents(int species_size, const NeatParams& p);

@@ -21,12 +21,25 @@ struct XorResult {
   std::array<double, 4> outputs{};  ///< mapped outputs for (0,0), (0,1), (1,0), (1,1)
 };
 
+/// How a network is read on XOR. The defaults are the project's CPPN query above;
+/// the NEAT paper's preset uses Stanley's own evaluation (his NEAT C++:
+/// Network::activate and experiments.cpp's xor_evaluate).
+struct XorRules {
+  /// Stanley's activation: a node outputs 0 until some input reaches it through enabled links
+  /// (his nodes stay inactive until an active node feeds them), and an acyclic network is
+  /// relaxed to its steady state (he activates depth + 2 times; here as many updates as nodes).
+  /// An output no input reaches makes the network "flawed": fitness 0.001, outputs 0, not solved.
+  bool stanley_activation = false;
+  /// Stanley's winner test: an output of exactly 0.5 counts as a 1 (out >= 0.5); false: > 0.5.
+  bool half_is_one = false;
+};
+
 /// The XOR layout: inputs x1, x2, bias (index 2); one output with `output`
 /// (SignedSigmoid or SteepenedSigmoid).
 GenomeLayout xor_layout(Activation output = Activation::SignedSigmoid);
 
 /// Evaluates g on the four patterns. Throws std::invalid_argument if g does
 /// not fit `layout`, or if the layout's output is neither sigmoid.
-XorResult evaluate_xor(const Genome& g, const GenomeLayout& layout = xor_layout());
+XorResult evaluate_xor(const Genome& g, const GenomeLayout& layout = xor_layout(), const XorRules& rules = {});
 
 }  // namespace robozoo

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "evolve/config/run_config.hpp"
 #include "evolve/neat/population.hpp"
 #include "evolve/neat/xor_task.hpp"
 
@@ -61,7 +62,7 @@ TEST(XorPresets, NeatPaperPresetSolvesXorOnAFewSeeds) {
     for (int gen = 0; gen < 300 && !solved; ++gen) {
       std::vector<double> f;
       for (const auto& g : pop.genomes()) {
-        const XorResult r = evaluate_xor(g, x.layout);
+        const XorResult r = evaluate_xor(g, x.layout, x.rules);
         f.push_back(r.fitness);
         solved |= r.solved;
         ASSERT_FALSE(has_cycle(g));
@@ -70,6 +71,42 @@ TEST(XorPresets, NeatPaperPresetSolvesXorOnAFewSeeds) {
     }
     EXPECT_TRUE(solved) << "seed " << seed;
   }
+}
+
+TEST(XorPresets, NeatPaperPresetSwitchesOnStanleysMechanicsTheDefaultPresetDoesNot) {
+  const XorPreset x = xor_preset("neat-paper");
+  const NeatParams& p = x.params;
+  EXPECT_EQ(p.weight_mutation, WeightMutationRule::Stanley);
+  EXPECT_EQ(p.weight_perturbation, 2.5);
+  EXPECT_EQ(p.weight_limit, 8.0);
+  EXPECT_EQ(p.initial_weight_range, 1.0);
+  EXPECT_EQ(p.mate_average_probability, 0.4);
+  EXPECT_EQ(p.mate_only_probability, 0.2);
+  EXPECT_EQ(p.crossover_rule, CrossoverRule::Stanley);
+  EXPECT_TRUE(p.independent_parents);
+  EXPECT_FALSE(p.keep_generation_champion);
+  EXPECT_EQ(p.species_elitism_min_offspring, 6);
+  EXPECT_EQ(p.stagnation, StagnationRule::Stanley);
+  EXPECT_EQ(p.dropoff_factor, 0.01);
+  EXPECT_EQ(p.offspring_rounding, OffspringRounding::Skim);
+  EXPECT_EQ(p.population_stagnation_generations, 20);
+  EXPECT_FALSE(p.split_bias_links);
+  EXPECT_TRUE(p.structural_draw_decides);
+  EXPECT_TRUE(p.childless_species_stay);
+  EXPECT_TRUE(x.rules.stanley_activation);
+  EXPECT_TRUE(x.rules.half_is_one);
+  EXPECT_TRUE(x.count_to_solver);
+  validate_neat_params(p);
+  const XorPreset d = xor_preset("default");
+  EXPECT_EQ(config_to_json(RunConfig{}).dump(), [&] {
+    RunConfig c;
+    c.neat = d.params;
+    c.neat.hidden_activations = NeatParams{}.hidden_activations;
+    return config_to_json(c).dump();
+  }()) << "the default preset is the project's NEAT";
+  EXPECT_FALSE(d.rules.stanley_activation);
+  EXPECT_FALSE(d.rules.half_is_one);
+  EXPECT_FALSE(d.count_to_solver);
 }
 
 }  // namespace
