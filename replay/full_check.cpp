@@ -241,8 +241,8 @@ std::string format_full_text(const FullCheckReport& r) {
   char secs[32];
   std::snprintf(secs, sizeof secs, "%.1f", r.seconds);
   o << "summary: " << r.generations_rerun << " generations re-run, " << r.events_compared
-    << " messages equal (utime and timings left out" << ") " << (r.diverged ? "before the first difference" : "")
-    << "; " << secs << " s; exit " << r.exit_code() << "\n";
+    << " messages equal (utime and timings left out)" << (r.diverged ? " before the first difference" : "") << "; "
+    << secs << " s; exit " << r.exit_code() << "\n";
   return o.str();
 }
 
