@@ -7,6 +7,50 @@ import { OrbitControls } from "/three/examples/jsm/controls/OrbitControls.js";
 
 const LEAF = 0xd62c24, INNER = 0x2858cc, TARGET = 0xf0b020;
 
+/// The ground: a grid every 0.5 m (and every 1 m, darker) on a plain colour, with the scene's fog.
+function groundMaterial() {
+  return new THREE.ShaderMaterial({
+    uniforms: THREE.UniformsUtils.merge([THREE.UniformsLib.fog, {
+      ground: { value: new THREE.Color(0xc9c6bf) },
+      minor: { value: new THREE.Color(0x8f8c85) },
+      major: { value: new THREE.Color(0x5f5d58) },
+    }]),
+    fog: true,
+    extensions: { derivatives: true },
+    // Pushed back in depth, so that the target's ring on it always wins.
+    polygonOffset: true, polygonOffsetFactor: 2, polygonOffsetUnits: 2,
+    vertexShader: `
+      varying vec2 vWorld;
+      #include <fog_pars_vertex>
+      void main() {
+        vWorld = (modelMatrix * vec4(position, 1.0)).xy;
+        vec4 mvPosition = modelViewMatrix * vec4(position, 1.0);
+        gl_Position = projectionMatrix * mvPosition;
+        #include <fog_vertex>
+      }`,
+    fragmentShader: `
+      uniform vec3 ground, minor, major;
+      varying vec2 vWorld;
+      #include <fog_pars_fragment>
+      // Coverage (0..1) of lines of about one pixel at every multiple of
+      // 'spacing' (m), fading to their mean where the cells shrink to a few pixels.
+      float lines(float spacing, out float fade) {
+        vec2 p = vWorld / spacing, w = fwidth(p);
+        vec2 d = abs(fract(p - 0.5) - 0.5) / max(w, 1e-6);
+        fade = smoothstep(0.15, 0.4, max(w.x, w.y));
+        return mix(1.0 - min(min(d.x, d.y), 1.0), 0.5 * (w.x + w.y), fade);
+      }
+      void main() {
+        float fadeMinor, fadeMajor;
+        float a = lines(0.5, fadeMinor), b = lines(1.0, fadeMajor);
+        vec3 c = mix(ground, minor, clamp(a, 0.0, 1.0) * 0.85);
+        c = mix(c, major, clamp(b, 0.0, 1.0) * 0.85);
+        gl_FragColor = vec4(c, 1.0);
+        #include <fog_fragment>
+      }`,
+  });
+}
+
 export class Scene {
   constructor(container) {
     this.container = container;
@@ -33,22 +77,15 @@ export class Scene {
     fill.position.set(0.6, 0.4, 0.35);
     this.scene.add(fill);
 
-    // The ground is pushed back in depth so that the grid lines on it always win.
-    const ground = new THREE.Mesh(new THREE.PlaneBufferGeometry(400, 400),
-                                  new THREE.MeshBasicMaterial({ color: 0xc9c6bf, polygonOffset: true,
-                                                                  polygonOffsetFactor: 2, polygonOffsetUnits: 2 }));
-    ground.renderOrder = -1;            // drawn first; lines on it do not depend on depth precision
-    ground.material.depthWrite = false;
+    // The ground and its grid in one shader: lines every 0.5 m and darker ones
+    // every metre, computed per pixel from the world position (antialiased, and
+    // faded into their mean colour where they would be closer than a pixel or
+    // two). Grid lines as line primitives (GridHelper) vanish near the camera
+    // in headless Chromium's software GL: SwiftShader drops a line with an end
+    // behind the camera, as every long line passing beside it has.
+    const ground = new THREE.Mesh(new THREE.PlaneBufferGeometry(400, 400), groundMaterial());
+    ground.renderOrder = -1;            // drawn first: everything else stands on it
     this.scene.add(ground);
-    const grid = new THREE.GridHelper(200, 400, 0x8f8c85, 0x8f8c85);
-    grid.rotation.x = Math.PI / 2;   // GridHelper lies in x-z; the ground is x-y
-    grid.position.z = 0.002;
-    this.scene.add(grid);
-    const coarse = new THREE.GridHelper(200, 200, 0x5f5d58, 0x5f5d58);
-    coarse.rotation.x = Math.PI / 2;
-    coarse.position.z = 0.003;
-    this.scene.add(coarse);
-
     this.target = new THREE.Group();
     const ring = new THREE.Mesh(new THREE.RingBufferGeometry(0.35, 0.5, 48),
                                 new THREE.MeshBasicMaterial({ color: TARGET, side: THREE.DoubleSide }));
