@@ -477,11 +477,12 @@ TEST(ViewBrowser, LatencyAndServerCpuWhileEvolvePublishes) {
   EXPECT_EQ(wait_status(view), 0);
   const std::string out = read_file(dir / "view.txt");
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(out, m, std::regex(R"((\d+) messages \((\d+) bad)"))) << out;
+  ASSERT_TRUE(std::regex_search(out, m, std::regex(R"((\d+) messages \((\d+) bad.* (\d+) poses dropped)"))) << out;
   const LogContents log = read_event_log(dir / "run.lcmlog");
   std::cout << "server CPU: " << cpu << " s over " << wall << " s of evolution (" << 100 * cpu / wall
             << " % of a core) for " << m[1] << " messages of " << log.records.size() << " published, "
-            << count_channel(log, kChannelPose) << " of them poses; pose publication -> drawn: median "
+            << count_channel(log, kChannelPose) << " of them poses, " << m[3]
+            << " dropped for the page; pose publication -> drawn: median "
             << l[l.size() / 2] << " ms, max " << l.back() << " ms over " << l.size() << " champions\n";
   // A measurement: no bound on the figures, but they must be real ones. Every
   // message reached the view; a pose is drawn after it was published (the page
