@@ -30,7 +30,11 @@ void follow_bus(const BusFeedOptions& o, ViewState& state, const std::function<b
                 std::ostream& log) {
   Bus bus(o.url);  // throws naming the URL
   Subscriber sub{&state};
-  bus.lcm().subscribe("ROBOZOO_.*", &Subscriber::on_message, &sub);
+  lcm::Subscription* subscription = bus.lcm().subscribe("ROBOZOO_.*", &Subscriber::on_message, &sub);
+  // LCM's receiving thread queues whole messages for this one and drops any
+  // beyond the subscription's capacity, 30 by default: a stall of some 40 ms
+  // (a busy machine) in the middle of a champion's pose stream lost poses.
+  if (subscription) subscription->setQueueCapacity(o.queue_messages);
   log << "robozoo-view: listening on " << o.url << std::endl;
   std::string run_seen;
   int64_t bad_seen = 0;

@@ -107,7 +107,8 @@ std::optional<int64_t> parse_request(const std::string& text) {
 
 class WsSession : public std::enable_shared_from_this<WsSession> {
  public:
-  WsSession(tcp::socket&& socket, Shared& shared) : ws_(std::move(socket)), shared_(shared), timer_(ws_.get_executor()) {}
+  WsSession(tcp::socket&& socket, Shared& shared)
+      : ws_(std::move(socket)), shared_(shared), timer_(ws_.get_executor()), in_(shared.options.max_client_frame) {}
   ~WsSession() {
     if (client_) shared_.state.leave(client_);
   }
@@ -117,7 +118,13 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     beast::get_lowest_layer(ws_).socket().set_option(net::socket_base::send_buffer_size(shared_.options.send_buffer), ec);
     beast::get_lowest_layer(ws_).expires_never();
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
-    ws_.read_message_max(shared_.options.max_client_frame);
+    // The size limit is in_'s: a message that does not fit ends the read with
+    // buffer_overflow at once, the connection still open, so it is counted
+    // before the page is told. (Beast's own read_message_max would fail the
+    // connection first and report it only once the peer has closed its end:
+    // a page that stays silent after an oversized frame would go uncounted
+    // until then, and at shutdown not at all.)
+    ws_.read_message_max(0);
     ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) { self->on_accept(ec); });
   }
 
@@ -149,8 +156,12 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   }
 
   void on_read(beast::error_code ec) {
-    if (ec) {  // closed by the page, a frame over the limit, or a broken connection
-      if (ec == websocket::error::message_too_big) ++shared_.refused;
+    if (ec == websocket::error::buffer_overflow) {  // a message over max_client_frame
+      ++shared_.refused;
+      close(websocket::close_code::too_big);
+      return;
+    }
+    if (ec) {  // closed by the page, or a broken connection
       stop();
       return;
     }

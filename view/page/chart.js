@@ -23,7 +23,7 @@ export class Chart {
     const w = c.clientWidth, h = c.clientHeight;
     if (w === 0 || h === 0) return;
     c.width = Math.round(w * dpr); c.height = Math.round(h * dpr);
-    const ctx = c.getContext("2d");
+    const ctx = c.getContext("2d", { willReadFrequently: true });  // on the CPU, as the strip's (strip.js)
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, w, h);
     const L = 44, R = 30, T = 6, B = 18;

@@ -25,7 +25,10 @@ export class Strip {
     if (c.width !== Math.round(w * dpr) || c.height !== Math.round(h * dpr)) {
       c.width = Math.round(w * dpr); c.height = Math.round(h * dpr);
     }
-    const ctx = c.getContext("2d");
+    // A canvas drawn on the CPU: with software WebGL, Chromium's GPU-backed 2D
+    // canvas rasterises each line through the same software GL, and redrawing
+    // the strip's 35 traces five times a second halved the page's frame rate.
+    const ctx = c.getContext("2d", { willReadFrequently: true });
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, w, h);
     const rows = this.neurons + this.sensors;

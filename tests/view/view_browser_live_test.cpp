@@ -24,7 +24,7 @@
 #include "render/png_io.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/render/messages.hpp"
-#include "tests/view-pending/browser.hpp"
+#include "tests/support/browser.hpp"
 #include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
 
@@ -48,6 +48,11 @@ void run_inside(const std::string& test) {
                               "ROBOZOO_VIEW_NETNS=1 exec " + std::string(self) + " --gtest_filter=" + test + "'");
   EXPECT_EQ(o.status, 0) << o.output;
   EXPECT_NE(o.output.find("[  PASSED  ] 1 test"), std::string::npos) << o.output;
+  // What the test printed itself (figures), without GoogleTest's lines.
+  std::istringstream lines(o.output);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line[0] != '[' && line.rfind("Running main", 0) != 0 && line.rfind("Note:", 0) != 0)
+      std::cout << line << "\n";
 }
 
 #define IN_NAMESPACE()                                                                       \
@@ -91,8 +96,14 @@ Pixels count_colours(const render::Image& img) {
   return p;
 }
 
+/// Writes a screenshot to `path` (and, when ROBOZOO_VIEW_SHOTS names a folder,
+/// a copy there to look at) and decodes it.
 render::Image decode_png(const std::vector<uint8_t>& png, const std::string& path) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  std::vector<std::string> paths = {path};
+  if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS"))
+    paths.push_back(std::string(keep) + "/" + path.substr(path.rfind('/') + 1));
+  for (const std::string& p : paths)
+    std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   return render::read_png(path);
 }
 
@@ -103,6 +114,22 @@ int changed_pixels(const render::Image& a, const render::Image& b) {
     for (int x = 0; x < a.width(); ++x) {
       const render::Rgb p = a.at(x, y), q = b.at(x, y);
       n += std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b) > 30;
+    }
+  return n;
+}
+
+/// Pixels that are a sphere's (red or blue) in one picture and not the same
+/// colour in the other: the robot moved, not just the camera over the ground.
+int changed_sphere_pixels(const render::Image& a, const render::Image& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return -1;
+  auto kind = [](const render::Rgb& c) {
+    return render::testing::is_red(c.r, c.g, c.b) ? 1 : render::testing::is_blue(c.r, c.g, c.b) ? 2 : 0;
+  };
+  int n = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      const int p = kind(a.at(x, y)), q = kind(b.at(x, y));
+      n += p != q && (p != 0 || q != 0);
     }
   return n;
 }
@@ -137,25 +164,37 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
                                          "--steps", "600", "--quiet"};
   const pid_t evolve = spawn(evolve_args(dir / "run.lcmlog", 2, {"--lcm-url", kUrl}, size), dir / "evolve.txt");
 
-  // A robot with red and blue spheres, shown in the middle of its trajectory.
-  ASSERT_TRUE(wait_for(
-      [&] {
-        const auto j = stats(a);
-        return j["leaves"] > 0 && j["leaves"] < j["spheres"] && j["samples"] > 10 && j["simTime"].is_number() &&
-               j["simTime"].get<double>() + 1.5 < j["endTime"].get<double>();
-      },
-      90))
-      << stats(a).dump() << read_file(dir / "view.txt");
-  const auto s0 = stats(a);
-  const render::Image one = decode_png(browser.screenshot(a, s0["canvas"]), dir / "one.png");
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  const render::Image two = decode_png(browser.screenshot(a, s0["canvas"]), dir / "two.png");
+  // Two screenshots half a second apart of one robot with red and blue
+  // spheres, shown with at least 3 s of its trajectory to go. A new champion
+  // may take over the page between them (one comes every generation): such a
+  // pair shows two robots and says nothing, and the next is taken. Once evolve
+  // is done the last champion plays in a loop, so a pair of one robot comes.
+  auto playing = [&] {
+    const auto j = stats(a);
+    return j["leaves"] > 0 && j["leaves"] < j["spheres"] && j["samples"] > 10 && j["simTime"].is_number() &&
+           j["simTime"].get<double>() + 3.0 < j["endTime"].get<double>();
+  };
+  nlohmann::json s0, s1;
+  render::Image one, two;
+  const auto give_up = Clock::now() + std::chrono::seconds(90);
+  int pairs = 0;
+  for (; Clock::now() < give_up; ++pairs) {
+    ASSERT_TRUE(wait_for(playing, 30)) << stats(a).dump() << read_file(dir / "view.txt");
+    s0 = stats(a);
+    one = decode_png(browser.screenshot(a, s0["canvas"]), dir / "one.png");
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    two = decode_png(browser.screenshot(a, s0["canvas"]), dir / "two.png");
+    s1 = stats(a);
+    if (s1["robot"] == s0["robot"]) break;
+  }
+  ASSERT_EQ(s1["robot"], s0["robot"]) << "no two screenshots of one robot in 90 s (" << pairs << " pairs)";
+  EXPECT_GT(s1["simTime"].get<double>(), s0["simTime"].get<double>()) << s0.dump() << "\n" << s1.dump();
   const Pixels p1 = count_colours(one), p2 = count_colours(two);
   EXPECT_GT(p1.red, 30) << s0.dump();
   EXPECT_GT(p1.blue, 30) << s0.dump();
   EXPECT_GT(p2.red, 30);
   EXPECT_GT(p2.blue, 30);
-  EXPECT_GT(changed_pixels(one, two), 50) << "the robot did not move between the screenshots";
+  EXPECT_GT(changed_sphere_pixels(one, two), 50) << "the robot did not move between the screenshots";
 
   ASSERT_EQ(wait_status(evolve), 0) << read_file(dir / "evolve.txt");
   const std::vector<int> gens = generations_in(dir / "run.lcmlog");
@@ -163,16 +202,27 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   EXPECT_TRUE(wait_for([&] { return stats(a)["chartPoints"] == gens.size(); }, 20)) << stats(a).dump();
   EXPECT_EQ(stats(a)["chartGenerations"], nlohmann::json(gens));
 
-  // A page that joins after the run: the same history, the champion with its poses.
-  const std::string b = browser.open(kPage);
-  EXPECT_TRUE(wait_for([&] { const auto j = stats(b); return !j.is_null() && j["chartPoints"] == gens.size(); }, 30))
-      << stats(b).dump();
-  const auto sa = stats(a), sb = stats(b);
+  // A second browser that joins after the run: the same history, the champion
+  // with its poses, drawn.
+  HeadlessBrowser late(dir / "profile-late", dir / "chromium-late.txt");
+  const std::string b = late.open(kPage);
+  auto late_stats = [&] { return page_stats(late, b); };
+  EXPECT_TRUE(wait_for([&] { const auto j = late_stats(); return !j.is_null() && j["chartPoints"] == gens.size(); }, 30))
+      << late_stats().dump();
+  // Its first stats frame comes one stats interval (1 s) after it joined.
+  EXPECT_TRUE(wait_for([&] { return late_stats()["dropped"].is_number(); }, 5)) << late_stats().dump();
+  const auto sa = stats(a), sb = late_stats();
   EXPECT_EQ(sb["chartGenerations"], sa["chartGenerations"]);
   EXPECT_EQ(sb["champions"], sa["champions"]);
   EXPECT_EQ(sb["robot"], sa["robot"]);
   EXPECT_GT(sb["samples"], 10);
   EXPECT_EQ(sb["dropped"], 0);
+  const Pixels p3 = count_colours(decode_png(late.screenshot(b, sb["canvas"]), dir / "late.png"));
+  EXPECT_GT(p3.red, 30) << sb.dump();
+  EXPECT_GT(p3.blue, 30) << sb.dump();
+  std::cout << "live page: " << p1.red << "/" << p2.red << " red, " << p1.blue << "/" << p2.blue << " blue pixels, "
+            << changed_pixels(one, two) << " changed, " << changed_sphere_pixels(one, two)
+            << " of them the robot's (pair " << pairs + 1 << "); late page: " << p3.red << " red, " << p3.blue << " blue\n";
 
   ASSERT_TRUE(kill_process(view, SIGTERM));
   EXPECT_EQ(wait_status(view), 0);
@@ -180,28 +230,42 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   EXPECT_NE(out.find("(0 bad, skipped), run feedforward-s7, 6 generations"), std::string::npos) << out;
 }
 
-/// A page that connects and never reads, with a tiny receive window.
+/// A page with a tiny receive window that reads nothing until drain(): then
+/// everything that waited for it, until the view closes the connection.
 class StuckPage {
  public:
-  explicit StuckPage(unsigned short port) : socket_(ioc_) {
-    socket_.open(boost::asio::ip::tcp::v4());
-    socket_.set_option(boost::asio::socket_base::receive_buffer_size(4096));
-    socket_.connect({boost::asio::ip::make_address("127.0.0.1"), port});
-    const std::string upgrade =
-        "GET /ws HTTP/1.1\r\nHost: 127.0.0.1:8080\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
-        "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n";
-    boost::asio::write(socket_, boost::asio::buffer(upgrade));
+  explicit StuckPage(unsigned short port) : ws_(ioc_) {
+    ws_.next_layer().open(boost::asio::ip::tcp::v4());
+    ws_.next_layer().set_option(boost::asio::socket_base::receive_buffer_size(kReceiveBuffer));
+    ws_.next_layer().connect({boost::asio::ip::make_address("127.0.0.1"), port});
+    ws_.handshake("127.0.0.1:" + std::to_string(port), "/ws");
+  }
+  static constexpr int kReceiveBuffer = 4096;  // bytes
+  int poses = 0;          ///< pose frames it got
+  int64_t dropped = -1;   ///< the last count of its dropped poses the server sent it
+  void drain() {
+    try {
+      for (;;) {
+        boost::beast::flat_buffer buf;
+        ws_.read(buf);
+        const auto j = nlohmann::json::parse(boost::beast::buffers_to_string(buf.data()));
+        poses += j["t"] == "pose";
+        if (j["t"] == "stats") dropped = j["dropped"].get<int64_t>();
+      }
+    } catch (const boost::beast::system_error&) {  // the view closes when it exits
+    }
   }
 
  private:
   boost::asio::io_context ioc_;
-  boost::asio::ip::tcp::socket socket_;
+  boost::beast::websocket::stream<boost::asio::ip::tcp::socket> ws_;
 };
 
 TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
   IN_NAMESPACE();
   TempDir dir;
-  const pid_t view = start_view(dir, {"--queue-poses", "20", "--idle-exit", "4"});
+  constexpr int kQueuePoses = 20;
+  const pid_t view = start_view(dir, {"--queue-poses", std::to_string(kQueuePoses), "--idle-exit", "4"});
   StuckPage stuck(8080);
   // A page that reads everything, alongside.
   namespace websocket = boost::beast::websocket;
@@ -210,6 +274,8 @@ TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
   ws.next_layer().connect({boost::asio::ip::make_address("127.0.0.1"), 8080});
   ws.handshake("127.0.0.1:8080", "/ws");
   int gens = 0, poses = 0;
+  int64_t dropped = -1;             // its own, as the server last said
+  size_t smallest_pose = SIZE_MAX;  // bytes
   std::thread reader([&] {
     try {
       for (;;) {
@@ -217,14 +283,19 @@ TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
         ws.read(buf);
         const auto j = nlohmann::json::parse(boost::beast::buffers_to_string(buf.data()));
         gens += j["t"] == "gen";
-        poses += j["t"] == "pose";
+        if (j["t"] == "stats") dropped = j["dropped"].get<int64_t>();
+        if (j["t"] == "pose") {
+          ++poses;
+          smallest_pose = std::min(smallest_pose, buf.size());
+        }
       }
     } catch (...) {  // the view closes when it exits
     }
   });
   const pid_t evolve = spawn(evolve_args(dir / "run.lcmlog", 2, {"--lcm-url", kUrl, "--pose-every", "1"}), dir / "evolve.txt");
   ASSERT_EQ(wait_status(evolve), 0) << read_file(dir / "evolve.txt");
-  EXPECT_EQ(wait_status(view), 0);  // --idle-exit
+  stuck.drain();  // until the view exits (--idle-exit)
+  EXPECT_EQ(wait_status(view), 0);
   reader.join();
   const std::string out = read_file(dir / "view.txt");
   std::smatch m;
@@ -236,10 +307,19 @@ TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
   const long long published = static_cast<long long>(count_channel(log, kChannelPose));
   EXPECT_EQ(std::stoll(m[3]), published);
   EXPECT_GT(published, 400);  // at least one full-rate trajectory
-  const long long dropped = std::stoll(m[4]);
-  EXPECT_GT(dropped, published / 2) << out;  // the stuck page took at most its queue and socket buffers
+  // The reading page got every generation, and every pose but the few it may
+  // have fallen behind on (a queue of 20 is short), which are counted.
   EXPECT_EQ(gens, 4);
-  EXPECT_GT(poses, 0);
+  EXPECT_EQ(poses + dropped, published) << poses << " got, " << dropped << " dropped";
+  // The stuck page: every pose either reached it or was counted as dropped,
+  // and what reached it is no more than its queue and the two socket buffers
+  // hold (the kernel doubles what is asked: the server's 64 KiB, its 4 KiB).
+  EXPECT_EQ(stuck.poses + stuck.dropped, published) << stuck.poses << " got, " << stuck.dropped << " dropped";
+  const size_t buffered = (2 * 64 * 1024 + 2 * StuckPage::kReceiveBuffer) / smallest_pose;
+  EXPECT_LE(stuck.poses, kQueuePoses + static_cast<long long>(buffered)) << "its queue was not bounded";
+  std::cout << "reading page: " << poses << " poses got, " << dropped << " dropped; stuck page: " << stuck.poses << " poses got, " << stuck.dropped << " dropped of " << published
+            << " (at most " << kQueuePoses << " + " << buffered << " in the socket buffers)\n";
+  EXPECT_EQ(std::stoll(m[4]), stuck.dropped + dropped) << out;  // the view's count: both pages
 }
 
 /// A log of one hand-made robot of `n` spheres (a chain with side branches)
@@ -323,12 +403,25 @@ TEST(ViewBrowser, FrameRateOfAFiftySphereRobot) {
   auto stats = [&] { return page_stats(browser, a); };
   ASSERT_TRUE(wait_for([&] { const auto j = stats(); return !j.is_null() && j["spheres"] >= 40 && j["samples"] > 50; }, 60))
       << stats().dump();
+  const auto before = stats();
   const double fps = page_frame_rate(browser, a, 4.0);
   const auto j = stats();
+  const nlohmann::json ms = browser.evaluate(a, "robozooView.timeDraw(20)");
   std::cout << "frame rate: " << fps << " frames/s for a " << j["spheres"] << "-sphere robot (page "
-            << j["canvas"]["width"] << "x" << j["canvas"]["height"] << " canvas, software WebGL)\n";
+            << j["canvas"]["width"] << "x" << j["canvas"]["height"] << " canvas, software WebGL); one draw: 3D view "
+            << ms["scene"] << " ms, strip " << ms["strip"] << " ms, chart " << ms["chart"] << " ms\n";
   RecordProperty("fps", std::to_string(fps));
-  EXPECT_GE(fps, 15.0);  // the aim is 30; below 15 the page has become too slow to watch
+  // A measurement (the aim is 30 frames/s; the machine decides): no bound on
+  // the figure, but the page must have drawn the robot, moving, all along.
+  EXPECT_GT(fps, 0.0);
+  EXPECT_GT(j["frames"].get<int64_t>(), before["frames"].get<int64_t>()) << "the page drew no frame";
+  if (!real) {
+    EXPECT_EQ(j["spheres"], 50);
+  }
+  const render::Image shot = decode_png(browser.screenshot(a, j["canvas"]), dir / "fifty.png");
+  const Pixels p = count_colours(shot);
+  EXPECT_GT(p.red, 100) << "no robot on the canvas";
+  EXPECT_GT(p.blue, 100) << "no robot on the canvas";
   kill_process(view, SIGTERM);
   EXPECT_EQ(wait_status(view), 0);
 }
@@ -380,13 +473,23 @@ TEST(ViewBrowser, LatencyAndServerCpuWhileEvolvePublishes) {
   std::vector<double> l;
   for (const auto& [id, ms] : latency) l.push_back(ms);
   std::sort(l.begin(), l.end());
-  std::cout << "server CPU: " << cpu << " s over " << wall << " s of evolution (" << 100 * cpu / wall
-            << " % of a core); pose publication -> drawn: median " << l[l.size() / 2] << " ms, max " << l.back()
-            << " ms over " << l.size() << " champions\n";
-  EXPECT_LT(cpu / wall, 0.5);
-  EXPECT_LT(l[l.size() / 2], 1000.0);
   kill_process(view, SIGTERM);
   EXPECT_EQ(wait_status(view), 0);
+  const std::string out = read_file(dir / "view.txt");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(out, m, std::regex(R"((\d+) messages \((\d+) bad.* (\d+) poses dropped)"))) << out;
+  const LogContents log = read_event_log(dir / "run.lcmlog");
+  std::cout << "server CPU: " << cpu << " s over " << wall << " s of evolution (" << 100 * cpu / wall
+            << " % of a core) for " << m[1] << " messages of " << log.records.size() << " published, "
+            << count_channel(log, kChannelPose) << " of them poses, " << m[3]
+            << " dropped for the page; pose publication -> drawn: median "
+            << l[l.size() / 2] << " ms, max " << l.back() << " ms over " << l.size() << " champions\n";
+  // A measurement: no bound on the figures, but they must be real ones. Every
+  // message reached the view; a pose is drawn after it was published (the page
+  // reads the pose's utime, evolve's clock, against its own on the same host).
+  EXPECT_EQ(std::stoll(m[1]), static_cast<long long>(log.records.size())) << out;
+  EXPECT_EQ(std::stoll(m[2]), 0);
+  EXPECT_GE(l.front(), 0.0) << "a pose drawn before it was published: utime is not the publication time";
 }
 
 }  // namespace
