@@ -98,7 +98,8 @@ LiveSummary run_live(const LiveOptions& o, const std::function<bool()>& should_s
 
   robozoo::Bus bus(o.url);  // throws naming the URL when LCM cannot start
   Subscriber sub{&collector, o.url};
-  bus.lcm().subscribe("ROBOZOO_.*", &Subscriber::on_message, &sub);
+  lcm::Subscription* subscription = bus.lcm().subscribe("ROBOZOO_.*", &Subscriber::on_message, &sub);
+  if (subscription) subscription->setQueueCapacity(kSubscriberQueueMessages);  // LCM's 30 lost poses
   say("listening on " + o.url + ", writing to " + o.out_dir);
 
   size_t runs_seen = 0;

@@ -288,7 +288,8 @@ LiveCheckSummary check_live(const std::string& url, const LiveCheckOptions& opti
       cv.notify_one();
     }
   } queue;
-  bus.lcm().subscribe("ROBOZOO_.*", &Queue::on_message, &queue);
+  lcm::Subscription* subscription = bus.lcm().subscribe("ROBOZOO_.*", &Queue::on_message, &queue);
+  if (subscription) subscription->setQueueCapacity(kSubscriberQueueMessages);
   log << "robozoo-replay: check --lcm-url: listening on " << url << std::endl;
   std::atomic<bool> stop{false};
   std::string receiver_error;

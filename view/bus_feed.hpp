@@ -6,6 +6,7 @@
 #include <ostream>
 #include <string>
 
+#include "evolve/io/bus.hpp"
 #include "view/view_state.hpp"
 
 namespace robozoo::view {
@@ -14,7 +15,7 @@ struct BusFeedOptions {
   std::string url;              ///< LCM URL
   double stream_timeout = 3.0;  ///< a pose stream is over after this long without a message (s)
   double idle_exit = 0.0;       ///< once a run was seen, return after this long without a message (s); 0 = never
-  int queue_messages = 10000;   ///< messages LCM may hold while ingest() is busy, beyond them it drops
+  int queue_messages = kSubscriberQueueMessages;  ///< messages LCM may hold while ingest() is busy, beyond them it drops
                                 ///< (count; about 10 s of evolve's paced 1 MB/s)
 };
 

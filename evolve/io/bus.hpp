@@ -11,6 +11,11 @@ namespace robozoo {
 /// LCM's default URL: multicast that never leaves the host (ttl=0).
 inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
 
+/// Messages LCM may hold for one of robozoo's subscriptions while its handler is
+/// busy (lcm::Subscription::setQueueCapacity). LCM's default, 30, is some 40 ms of
+/// a champion's pose stream: a busy machine lost poses (measured with robozoo-view).
+inline constexpr int kSubscriberQueueMessages = 10000;
+
 /// Pacing of live publishing: UDP multicast drops packets when a burst overflows
 /// a subscriber's receive buffer (a champion's pose stream is ~1,000 messages at
 /// once), so the bus sends at most `bytes_per_second` after a `burst_bytes` burst.
