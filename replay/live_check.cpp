@@ -279,16 +279,18 @@ LiveCheckSummary check_live(const std::string& url, const LiveCheckOptions& opti
     std::deque<std::pair<std::string, std::vector<uint8_t>>> items;
     Clock::time_point last = Clock::now();
     bool any = false;
-    void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+    // A plain function, not a member: LCM's pointer-to-member subscribe is
+    // instrumented wrongly by GCC 12's sanitizers (see render/live.cpp).
+    static void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel, Queue* self) {
       const auto* p = static_cast<const uint8_t*>(rbuf->data);
-      std::lock_guard<std::mutex> lock(m);
-      items.emplace_back(channel, std::vector<uint8_t>(p, p + rbuf->data_size));
-      last = Clock::now();
-      any = true;
-      cv.notify_one();
+      std::lock_guard<std::mutex> lock(self->m);
+      self->items.emplace_back(channel, std::vector<uint8_t>(p, p + rbuf->data_size));
+      self->last = Clock::now();
+      self->any = true;
+      self->cv.notify_one();
     }
   } queue;
-  lcm::Subscription* subscription = bus.lcm().subscribe("ROBOZOO_.*", &Queue::on_message, &queue);
+  lcm::Subscription* subscription = bus.lcm().subscribeFunction("ROBOZOO_.*", &Queue::on_message, &queue);
   if (subscription) subscription->setQueueCapacity(kSubscriberQueueMessages);
   log << "robozoo-replay: check --lcm-url: listening on " << url << std::endl;
   std::atomic<bool> stop{false};
