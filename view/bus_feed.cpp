@@ -17,10 +17,12 @@ struct Subscriber {
   ViewState* state;
   Clock::time_point last = Clock::now();
   bool any = false;
-  void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-    state->ingest(channel, rbuf->data, rbuf->data_size);  // never throws
-    last = Clock::now();
-    any = true;
+  // A plain function, not a member: see render/live.cpp (GCC 12's sanitizers and
+  // LCM's call through a pointer to member function).
+  static void on_message(const lcm::ReceiveBuffer* rbuf, const std::string& channel, Subscriber* self) {
+    self->state->ingest(channel, rbuf->data, rbuf->data_size);  // never throws
+    self->last = Clock::now();
+    self->any = true;
   }
 };
 
@@ -30,7 +32,7 @@ void follow_bus(const BusFeedOptions& o, ViewState& state, const std::function<b
                 std::ostream& log) {
   Bus bus(o.url);  // throws naming the URL
   Subscriber sub{&state};
-  lcm::Subscription* subscription = bus.lcm().subscribe("ROBOZOO_.*", &Subscriber::on_message, &sub);
+  lcm::Subscription* subscription = bus.lcm().subscribeFunction("ROBOZOO_.*", &Subscriber::on_message, &sub);
   // LCM's receiving thread queues whole messages for this one and drops any
   // beyond the subscription's capacity, 30 by default: a stall of some 40 ms
   // (a busy machine) in the middle of a champion's pose stream lost poses.

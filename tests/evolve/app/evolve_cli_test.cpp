@@ -190,9 +190,13 @@ TEST(EvolveCli, ResumeUsesTheCheckpointsConfigurationNotTheCommandLines) {
   ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2, {}, kLonger), 0);
   const std::string log = dir / "cut.lcmlog";
   const pid_t pid = spawn(evolve_args(log, 2, {}, kLonger), dir / "out.txt");
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  // Killed once its first checkpoint exists, not after a fixed time: a run slower to
+  // start (a sanitized build, a loaded machine) killed before its first checkpoint
+  // left nothing to resume, and --resume then ran a new run of the default size.
+  for (int i = 0; i < 6000 && !file_exists(log + ".checkpoint"); ++i) ::usleep(10000);
+  ASSERT_TRUE(file_exists(log + ".checkpoint")) << read_file(dir / "out.txt");
   kill_process(pid, SIGKILL);
-  wait_status(pid);
+  EXPECT_EQ(wait_status(pid), 128 + SIGKILL) << "the run ended before the kill";
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   ASSERT_TRUE(file_exists(log + ".checkpoint"));
   const int64_t done_before = read_checkpoint(log + ".checkpoint").evaluations;
