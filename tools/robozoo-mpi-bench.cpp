@@ -11,6 +11,8 @@
 // From those it projects, with evolve/parallel/scaling_model.hpp, the time per
 // generation, per run and for the paper's experiment on other rank counts, and
 // names what bounds each: the evaluations, rank 0's messaging, or its serial part.
+// With --resume LOG it measures the next generations of a logged, unfinished run
+// (on a copy) instead of a new one: late-generation robots as evolution made them.
 #include <time.h>
 #include <unistd.h>
 
@@ -63,6 +65,8 @@ struct Options {
   int trial_ranks = 8;
   bool foreground_checkpoint = false;
   std::string json_path;
+  std::string resume_log;  // continue this logged run (a copy) instead of starting one
+  bool force_version = false;
 };
 
 /// CPU time of the calling thread: rank 0's main thread, which hands out and
@@ -183,6 +187,16 @@ std::string main_bound(const Projection& p) {
   return best;
 }
 
+/// Copies a logged run (LOG and LOG.checkpoint) to `dest` so that measuring its
+/// next generations leaves the original untouched.
+void copy_run(const std::string& log, const std::string& dest) {
+  namespace fs = std::filesystem;
+  for (const std::string& suffix : {std::string(), std::string(".checkpoint")}) {
+    if (!fs::is_regular_file(log + suffix)) throw std::runtime_error("--resume: no file " + log + suffix);
+    fs::copy_file(log + suffix, dest + suffix, fs::copy_options::overwrite_existing);
+  }
+}
+
 int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
   RunConfig config;
   if (!o.config_file.empty()) config = load_config_file(o.config_file, config);
@@ -205,6 +219,11 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
   }
   opts.lcm_url = o.lcm_url;
   opts.background_checkpoint = !o.foreground_checkpoint;  // as robozoo-evolve --mpi, unless asked
+  if (!o.resume_log.empty()) {
+    copy_run(o.resume_log, opts.log_path);
+    opts.resume = true;
+    opts.force_version = o.force_version;
+  }
 
   MpiTransportParams tp;
   tp.record_jobs = true;
@@ -212,20 +231,39 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
   MpiTransport& transport = *owned;
   std::vector<GenerationRecord> records;
   std::vector<ProgressReport> reports;
+  int resumed_at = -1;
   MpiTransportStats transport_stats;
   {
     PoolEvaluator pool(std::move(owned), 600.0);
     RecordingEvaluator evaluator(pool, transport);
     Evolution evo(config, opts, evaluator);
+    if (!o.resume_log.empty()) {
+      if (!evo.resumed() || evo.finished())
+        throw std::runtime_error("--resume: " + o.resume_log + " is a finished run; nothing left to measure");
+      config = evo.config();
+    }
     transport.start(config_to_json(evo.config()).dump());
     std::cerr << "robozoo-mpi-bench: " << session.size() << " ranks (" << transport.size() << " evaluating) on "
               << session.host() << ": " << regime_name(config.regime) << ", population "
               << config.neat.population << ", " << config.generations << " generations of " << config.eval.sim.steps
-              << " steps\n";
-    evo.run([&](const ProgressReport& r) {
+              << " steps"
+              << (o.resume_log.empty() ? std::string()
+                                       : ", continuing " + o.resume_log + " at generation " +
+                                             std::to_string(evo.start_generation()) + " for " +
+                                             std::to_string(o.generations) + " generations")
+              << "\n";
+    const auto report = [&](const ProgressReport& r) {
       reports.push_back(r);
       std::cerr << format_progress(r) << std::endl;
-    });
+    };
+    if (o.resume_log.empty()) {
+      evo.run(report);
+    } else {
+      for (int g = 0; g < o.generations && evo.step(report); ++g) {
+      }
+      evo.wait_for_checkpoint();
+    }
+    resumed_at = evo.resumed() ? evo.start_generation() : -1;
     records = evaluator.records;
     transport_stats = transport.stats();
   }  // Shutdown to the worker ranks
@@ -239,15 +277,20 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                 {"host", session.host()},
                 {"regime", regime_name(config.regime)},
                 {"population", config.neat.population},
-                {"generations", config.generations},
+                {"generations", static_cast<int>(records.size())},
+                {"resumed_log", o.resume_log},
+                {"resumed_at_generation", resumed_at},
                 {"steps", config.eval.sim.steps},
                 {"seed", config.seed},
                 {"background_checkpoint", opts.background_checkpoint}};
-  std::printf("robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %d generations "
-              "of up to %d steps, seed %lld\n\n",
+  std::printf("robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %zu generations "
+              "of up to %d steps, seed %lld",
               session.size(), session.host().c_str(), session.size() - 1, regime_name(config.regime).c_str(),
-              config.neat.population, config.generations, config.eval.sim.steps,
-              static_cast<long long>(config.seed));
+              config.neat.population, records.size(), config.eval.sim.steps, static_cast<long long>(config.seed));
+  if (resumed_at >= 0)
+    std::printf("; generations %d-%d of %s", resumed_at, resumed_at + static_cast<int>(records.size()) - 1,
+                o.resume_log.c_str());
+  std::printf("\n\n");
 
   std::printf("Per-rank evaluation throughput (time in the work function, on the worker rank)\n");
   std::printf("  rank  jobs  busy s  evals/s   rank 0 saw: s  overhead/job\n");
@@ -294,8 +337,9 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                {"job_message_mean_bytes", mean(msg_out)},
                {"result_message_mean_bytes", mean(msg_in)}};
 
-  std::vector<double> wait, serial, messages, trajectory, breeding, checkpoint, cpu_per_job, msgs, bytes;
+  std::vector<double> total, wait, serial, messages, trajectory, breeding, checkpoint, cpu_per_job, msgs, bytes;
   for (const auto& g : records) {
+    total.push_back(g.timings.total);
     wait.push_back(g.timings.evaluate);
     serial.push_back(g.timings.total - g.timings.evaluate);
     messages.push_back(g.timings.messages);
@@ -311,9 +355,13 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
               "trajectory %.1f ms, breeding (selection, speciation, reproduction) %.1f ms, checkpoint %.1f ms\n",
               mean(wait), 1e3 * mean(serial), 1e3 * mean(messages), 1e3 * mean(trajectory), 1e3 * mean(breeding),
               1e3 * mean(checkpoint));
+  const double serial_share = mean(total) > 0 ? mean(serial) / mean(total) : 0.0;
+  std::printf("  the serial part is %.2f%% of the generation (%.3f s)\n", 100.0 * serial_share, mean(total));
   std::printf("  rank 0 CPU while the workers evaluate: %.3f ms per job\n", 1e3 * mean(cpu_per_job));
   j["rank0_per_generation"] = {{"waiting_seconds", mean(wait)},
                                {"serial_seconds", mean(serial)},
+                               {"generation_seconds", mean(total)},
+                               {"serial_share", serial_share},
                                {"messages_seconds", mean(messages)},
                                {"trajectory_seconds", mean(trajectory)},
                                {"breeding_seconds", mean(breeding)},
@@ -468,6 +516,14 @@ int main(int argc, char** argv) {
   app.add_flag("--foreground-checkpoint", o.foreground_checkpoint,
                "write checkpoints within the generation, as a local run does (to compare)");
   app.add_option("--json", o.json_path, "also write every figure to this JSON file");
+  auto* resume =
+      app.add_option("--resume", o.resume_log,
+                     "measure the next --generations generations of this logged, unfinished run (a copy of LOG and "
+                     "LOG.checkpoint; the run's own configuration): late-generation costs, robots as evolution made them");
+  app.add_flag("--force", o.force_version, "with --resume: continue a checkpoint another robozoo version wrote")
+      ->needs(resume);
+  for (const char* name : {"--regime", "--seed", "--population", "--steps", "--config"})
+    resume->excludes(app.get_option(name));
   try {
     app.set_version_flag("--version", robozoo::version_line());
     app.parse(argc, argv);
