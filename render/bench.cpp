@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <sched.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "runlog/log_source.hpp"
@@ -14,6 +16,18 @@ namespace robozoo::render {
 namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+/// CPU time of every thread of this process: llvmpipe's and libx264's own threads included (s).
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+int usable_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return 0;
+  return CPU_COUNT(&set);
 }
 }  // namespace
 
@@ -29,6 +43,7 @@ BenchFigures run_bench(const BenchOptions& o) {
     if (p.genome->genome.fitness > pick.genome->genome.fitness) pick = p;
 
   BenchFigures f;
+  f.cores = usable_cores();
   f.width = o.video.encoder.width;
   f.height = o.video.encoder.height;
   const auto ts = std::chrono::steady_clock::now();
@@ -49,11 +64,16 @@ BenchFigures run_bench(const BenchOptions& o) {
     VideoFrames vf(subject, o.video, stage);
     VideoStats s;
     Image img;
+    double cpu = 0;
     for (int i = 0; i < o.frames; ++i) {
+      const double c0 = process_cpu_seconds();
       if (!vf.next(img, &s)) break;
+      cpu += process_cpu_seconds() - c0;
       frames.push_back(img);
     }
     f.draw_fps = frames.size() / s.draw_seconds;
+    // (overlay included: a few percent of a frame's CPU time)
+    f.draw_cpu_ms = 1e3 * cpu / static_cast<double>(frames.size());
     f.overlay_fps = s.overlay_seconds > 0 ? frames.size() / s.overlay_seconds : 0;
   }
   const std::string dir = o.scratch.empty() ? "/tmp" : o.scratch;
@@ -61,17 +81,35 @@ BenchFigures run_bench(const BenchOptions& o) {
   // Encoding: the same frames again (RGB -> yuv420p, x264, MP4).
   {
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = process_cpu_seconds();
     VideoEncoder enc(path, o.video.encoder);
     for (int i = 0; i < o.frames; ++i) enc.add_frame(frames[static_cast<size_t>(i) % frames.size()]);
     enc.finish();
     f.encode_fps = o.frames / seconds_since(t0);
+    f.encode_cpu_ms = 1e3 * (process_cpu_seconds() - c0) / o.frames;
+  }
+  // The baseline, measured in the same run: the whole video drawn and encoded in
+  // turn on one thread (how videos were made before the two overlapped; the same bytes).
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = process_cpu_seconds();
+    const VideoSubject again = make_video_subject(*pick.run, *pick.genome);
+    VideoFrames vf(again, o.video, stage);
+    VideoEncoder enc(path, o.video.encoder);
+    Image img;
+    while (vf.next(img)) enc.add_frame(img);
+    enc.finish();
+    f.serial_wall_seconds = seconds_since(t0);
+    f.serial_cpu_seconds = process_cpu_seconds() - c0;
   }
   // The whole video, as `robozoo-render video` makes it (re-simulation included).
   {
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = process_cpu_seconds();
     const VideoSubject again = make_video_subject(*pick.run, *pick.genome);
     const VideoStats s = render_video(again, o.video, path, {}, &stage);
     f.video_wall_seconds = seconds_since(t0);
+    f.video_cpu_seconds = process_cpu_seconds() - c0;
     f.video_frames = s.frames;
   }
   std::remove(path.c_str());
@@ -79,18 +117,26 @@ BenchFigures run_bench(const BenchOptions& o) {
 }
 
 void print(std::ostream& out, const BenchFigures& f) {
-  char buf[512];
+  char buf[1536];
+  const double n = f.video_frames > 0 ? f.video_frames : 1;
   std::snprintf(buf, sizeof buf,
                 "renderer         %s\n"
                 "size             %dx%d, %d samples per pixel, robot of %d spheres\n"
-                "drawing          %.1f frames/s (scene + read-back)\n"
+                "drawing          %.1f frames/s (scene + read-back), %.1f ms of CPU a frame\n"
                 "overlay          %.1f frames/s (text and panels alone)\n"
-                "encoding         %.1f frames/s (yuv420p + H.264 + MP4)\n"
-                "champion video   %d frames, %d steps = %.1f s simulated, made in %.1f s wall: %.2fx real time%s\n",
-                f.renderer.c_str(), f.width, f.height, f.samples, f.spheres, f.draw_fps, f.overlay_fps, f.encode_fps,
-                f.video_frames, f.video_steps, f.video_sim_seconds, f.video_wall_seconds,
-                f.video_wall_seconds > 0 ? f.video_sim_seconds / f.video_wall_seconds : 0.0,
-                f.resimulated ? " (re-simulated)" : "");
+                "encoding         %.1f frames/s (yuv420p + H.264 + MP4), %.1f ms of CPU a frame\n"
+                "champion video   %d frames, %d steps = %.1f s simulated, made in %.1f s wall: %.2fx real time%s\n"
+                "                 CPU %.1f s (%.1f ms a frame), %.2f of %d cores busy\n"
+                "baseline         the same video drawn and encoded in turn: %.1f s wall, CPU %.1f s "
+                "(%.2f cores busy); side by side is %.2fx faster\n",
+                f.renderer.c_str(), f.width, f.height, f.samples, f.spheres, f.draw_fps, f.draw_cpu_ms, f.overlay_fps,
+                f.encode_fps, f.encode_cpu_ms, f.video_frames, f.video_steps, f.video_sim_seconds,
+                f.video_wall_seconds, f.video_wall_seconds > 0 ? f.video_sim_seconds / f.video_wall_seconds : 0.0,
+                f.resimulated ? " (re-simulated)" : "", f.video_cpu_seconds, 1e3 * f.video_cpu_seconds / n,
+                f.video_wall_seconds > 0 ? f.video_cpu_seconds / f.video_wall_seconds : 0.0, f.cores,
+                f.serial_wall_seconds, f.serial_cpu_seconds,
+                f.serial_wall_seconds > 0 ? f.serial_cpu_seconds / f.serial_wall_seconds : 0.0,
+                f.video_wall_seconds > 0 ? f.serial_wall_seconds / f.video_wall_seconds : 0.0);
   out << buf;
 }
 

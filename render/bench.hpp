@@ -25,7 +25,13 @@ struct BenchFigures {
   int video_frames = 0;          ///< frames of the whole champion video (count)
   int video_steps = 0;           ///< physics steps it shows (count)
   double video_sim_seconds = 0;  ///< simulated time it shows (s)
-  double video_wall_seconds = 0; ///< wall time to make it (s)
+  double video_wall_seconds = 0; ///< wall time to make it (s), drawing and encoding side by side
+  double video_cpu_seconds = 0;  ///< CPU time of every thread meanwhile (s)
+  double serial_wall_seconds = 0; ///< the same video drawn and encoded in turn on one thread (s): the baseline
+  double serial_cpu_seconds = 0;  ///< CPU time of every thread meanwhile (s)
+  double draw_cpu_ms = 0;        ///< CPU time per frame of drawing + read-back, every thread (ms)
+  double encode_cpu_ms = 0;      ///< CPU time per frame of encoding, every thread (ms)
+  int cores = 0;                 ///< cores this process may run on (count)
   bool resimulated = false;      ///< the trajectory had to be re-simulated
   double resimulate_seconds = 0; ///< time spent re-simulating (s)
 };

@@ -1,0 +1,51 @@
+#include "render/bench.hpp"
+
+#include <fcntl.h>  // tests/support/subprocess.hpp uses open()
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "tests/render/fixtures.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo::render {
+namespace {
+
+using robozoo::testing::TempDir;
+
+// The benchmark makes the champion's video twice, side by side and in turn (its
+// baseline), and reports each one's wall and CPU time; it leaves no file behind.
+TEST(RenderBench, MeasuresBothWaysOfMakingTheVideoAndCleansUp) {
+  TempDir dir;
+  testing::write_small_run(dir / "run.lcmlog");
+  const std::string scratch = dir / "scratch";
+  std::filesystem::create_directories(scratch);
+  BenchOptions o;
+  o.log = dir / "run.lcmlog";
+  o.frames = 5;
+  o.scratch = scratch;
+  o.video.encoder.width = 320;
+  o.video.encoder.height = 180;
+  o.video.speed = 4.0;
+  const BenchFigures f = run_bench(o);
+  EXPECT_GT(f.spheres, 0);
+  EXPECT_GT(f.draw_fps, 0);
+  EXPECT_GT(f.encode_fps, 0);
+  EXPECT_GT(f.draw_cpu_ms, 0);
+  EXPECT_GT(f.encode_cpu_ms, 0);
+  EXPECT_GT(f.video_frames, 1);
+  EXPECT_GT(f.video_wall_seconds, 0);
+  EXPECT_GT(f.video_cpu_seconds, 0);
+  EXPECT_GT(f.serial_wall_seconds, 0);
+  EXPECT_GT(f.serial_cpu_seconds, 0);
+  EXPECT_GE(f.cores, 1);
+  EXPECT_TRUE(std::filesystem::is_empty(scratch));
+  std::ostringstream out;
+  print(out, f);
+  EXPECT_NE(out.str().find("baseline"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("cores busy"), std::string::npos) << out.str();
+}
+
+}  // namespace
+}  // namespace robozoo::render
