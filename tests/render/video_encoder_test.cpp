@@ -66,6 +66,24 @@ TEST(VideoEncoder, SameFramesSameBytes) {
   EXPECT_EQ(bytes_of(dir / "a.mp4"), bytes_of(dir / "b.mp4"));
 }
 
+// libx264's output depends on its thread count, and its own choice (threads 0)
+// follows the machine's cores: by default one thread, so a log gives the same
+// video on every machine.
+TEST(VideoEncoder, DefaultIsOneThreadSoBytesDoNotFollowTheCores) {
+  EXPECT_EQ(EncoderOptions{}.threads, 1);
+  TempDir dir;
+  for (int threads : {-1, 1}) {
+    EncoderOptions o;
+    o.width = 64;
+    o.height = 48;
+    if (threads > 0) o.threads = threads;
+    VideoEncoder enc(dir / (threads > 0 ? "one.mp4" : "default.mp4"), o);
+    for (int i = 0; i < 8; ++i) enc.add_frame(gradient(64, 48, i));
+    enc.finish();
+  }
+  EXPECT_EQ(bytes_of(dir / "default.mp4"), bytes_of(dir / "one.mp4"));
+}
+
 TEST(VideoEncoder, OddSizesAndBadFrames) {
   TempDir dir;
   EncoderOptions o;
