@@ -1,5 +1,7 @@
 #include "evolve/run/checkpoint.hpp"
 
+#include "evolve/core/json_fields.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -87,31 +89,34 @@ Checkpoint read_checkpoint(const std::string& path) {
 }
 
 Checkpoint checkpoint_from_text(const std::string& text, const std::string& path) {
+  using namespace json_fields;
   try {
     const auto j = nlohmann::json::parse(text);
-    if (j.value("format", "") != "robozoo-checkpoint")
+    if (!j.is_object() || j.value("format", "") != "robozoo-checkpoint")
       throw std::runtime_error("not a robozoo checkpoint");
-    if (j.at("format_version").get<int>() != Checkpoint::kFormatVersion)
+    const int64_t version = as_i64(field(j, "format_version", "checkpoint"), "checkpoint.format_version");
+    if (version != Checkpoint::kFormatVersion)
       throw std::runtime_error(
-          "checkpoint format version " + j.at("format_version").dump() + " is not the supported " +
+          "checkpoint format version " + std::to_string(version) + " is not the supported " +
           std::to_string(Checkpoint::kFormatVersion) +
-          (j.at("format_version").get<int>() < Checkpoint::kFormatVersion
+          (version < Checkpoint::kFormatVersion
                ? " (written by an older robozoo, before node genes had drawing positions and the "
                  "HyperNEAT topology rules; it cannot be resumed: start the run again)"
                : " (written by a newer robozoo)"));
+    const std::string p = "checkpoint";
     Checkpoint c;
-    c.run_id = j.at("run_id").get<std::string>();
-    c.software_version = j.at("software_version").get<std::string>();
-    c.config = j.at("config");
-    c.population = population_state_from_json(j.at("population"));
-    c.rng_state = j.at("rng_state").get<std::string>();
-    c.evaluations = j.at("evaluations").get<int64_t>();
-    c.best_so_far = j.at("best_so_far").get<double>();
-    c.last_champion_hash = j.at("last_champion_hash").get<uint64_t>();
-    c.log_bytes = j.at("log_bytes").get<int64_t>();
-    c.log_events = j.at("log_events").get<int64_t>();
-    c.elapsed_seconds = j.at("elapsed_seconds").get<double>();
-    c.finished = j.at("finished").get<bool>();
+    c.run_id = as_string(field(j, "run_id", p), p + ".run_id");
+    c.software_version = as_string(field(j, "software_version", p), p + ".software_version");
+    c.config = field(j, "config", p);
+    c.population = population_state_from_json(field(j, "population", p));
+    c.rng_state = as_string(field(j, "rng_state", p), p + ".rng_state");
+    c.evaluations = as_i64(field(j, "evaluations", p), p + ".evaluations");
+    c.best_so_far = as_double(field(j, "best_so_far", p), p + ".best_so_far");
+    c.last_champion_hash = as_u64(field(j, "last_champion_hash", p), p + ".last_champion_hash");
+    c.log_bytes = as_i64(field(j, "log_bytes", p), p + ".log_bytes");
+    c.log_events = as_i64(field(j, "log_events", p), p + ".log_events");
+    c.elapsed_seconds = as_double(field(j, "elapsed_seconds", p), p + ".elapsed_seconds");
+    c.finished = as_bool(field(j, "finished", p), p + ".finished");
     if (c.log_bytes < 0 || c.log_events < 0 || c.evaluations < 0)
       throw std::runtime_error("negative counts");
     return c;

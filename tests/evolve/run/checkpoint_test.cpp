@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "evolve/config/run_config.hpp"
 #include "evolve/cppn/genome.hpp"
@@ -87,6 +90,49 @@ TEST(Checkpoint, MalformedFilesAreClearErrors) {
   const std::string text = robozoo::testing::read_file(dir / "c");
   std::ofstream(dir / "cut") << text.substr(0, text.size() / 2);
   EXPECT_THROW(read_checkpoint(dir / "cut"), std::runtime_error);
+}
+
+// Found by fuzz_checkpoint: an integer field written as a float too large for its
+// type (last_champion_hash 1.02872e+20) was converted by a plain cast, undefined
+// behaviour. Every integer field now takes JSON integers in its type's range only.
+TEST(Checkpoint, IntegerFieldsRefuseFloatsAndOutOfRangeValues) {
+  TempDir dir;
+  nlohmann::json good = nlohmann::json::parse(
+      [&] {
+        write_checkpoint(dir / "c", sample());
+        return robozoo::testing::read_file(dir / "c");
+      }());
+  struct Case {
+    const char* key;
+    nlohmann::json value;
+    const char* says;
+  };
+  const std::vector<Case> cases = {
+      {"last_champion_hash", 1.02872e20, "checkpoint.last_champion_hash: expected an integer, got number"},
+      {"last_champion_hash", -1, "checkpoint.last_champion_hash: out of range"},
+      {"evaluations", 12.5, "checkpoint.evaluations: expected an integer"},
+      {"log_bytes", 1e300, "checkpoint.log_bytes: expected an integer"},
+      {"log_events", "17", "checkpoint.log_events: expected an integer, got string"},
+      {"format_version", 2.0, "checkpoint.format_version: expected an integer"},
+      {"finished", 0, "checkpoint.finished: expected true or false"},
+      {"best_so_far", "x", "checkpoint.best_so_far: expected a number"},
+  };
+  for (const Case& k : cases) {
+    nlohmann::json bad = good;
+    bad[k.key] = k.value;
+    std::ofstream(dir / "bad") << bad.dump();
+    try {
+      read_checkpoint(dir / "bad");
+      ADD_FAILURE() << k.key << " = " << k.value.dump() << " was accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(k.says), std::string::npos) << e.what();
+    }
+  }
+  // The largest hash a checkpoint can hold still reads back.
+  nlohmann::json top = good;
+  top["last_champion_hash"] = UINT64_MAX;
+  std::ofstream(dir / "top") << top.dump();
+  EXPECT_EQ(read_checkpoint(dir / "top").last_champion_hash, UINT64_MAX);
 }
 
 }  // namespace
