@@ -79,7 +79,9 @@ TEST(EvolveCli, LogsCarryTheRegimesTopologyTheVersionAndTruthfulFigures) {
     const Genome g = genome_from_message(m, robot_layout());
     EXPECT_NO_THROW(validate_regime_links(g, Regime::FeedForward, p)) << "genome " << g.id;
     EXPECT_EQ(count_recurrent_links(g), 0);
-    if (m.generation == 0) EXPECT_EQ(g.links.size(), 99u);
+    if (m.generation == 0) {
+      EXPECT_EQ(g.links.size(), 99u);
+    }
   }
   int gen0 = 0;
   for (const auto& m : decode_all<cppn_genome_t>(rec, kChannelGenome)) {
@@ -141,10 +143,26 @@ TEST(EvolveCli, KillNineThenResumeEqualsUninterruptedRun) {
   ASSERT_EQ(run_evolve(dir / "whole.lcmlog", 2, {}, kLonger), 0);
   const std::string log = dir / "cut.lcmlog";
   bool resumed_later = false;  // one resume at least took over after generation 0
-  // Kill at several moments: at start, early and mid-run; then once more while resuming.
-  for (int delay_ms : {20, 300, 800}) {
+  // Kill at several moments: at start, early, and mid-run (once the checkpoint holds
+  // a finished generation: a fixed 800 ms was still inside generation 0 under the
+  // sanitizers on a loaded machine, and then no kill proved a resume); then once
+  // more while resuming.
+  for (int delay_ms : {20, 300, -1}) {
     const pid_t pid = spawn(evolve_args(log, 2, {}, kLonger), dir / "out.txt");
-    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    if (delay_ms >= 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    } else {
+      bool past_zero = false;
+      for (int i = 0; i < 12000 && !past_zero; ++i) {
+        ::usleep(10000);
+        try {
+          past_zero = file_exists(log + ".checkpoint") && read_checkpoint(log + ".checkpoint").evaluations > 0;
+        } catch (const std::exception&) {
+          // written atomically: only a missing file, keep waiting
+        }
+      }
+      EXPECT_TRUE(past_zero) << "no checkpoint past generation 0 within 120 s";
+    }
     kill_process(pid, SIGKILL);
     EXPECT_EQ(wait_status(pid), 128 + SIGKILL) << "the run ended before the kill at " << delay_ms << " ms";
     // Its workers die with it (they watch their parent); give them a moment.
