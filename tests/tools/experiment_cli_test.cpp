@@ -8,6 +8,7 @@
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
 #include "evolve/run/checkpoint.hpp"
+#include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo {
@@ -19,12 +20,6 @@ std::vector<std::string> driver(const std::string& out, const std::vector<std::s
   std::vector<std::string> a = {bin("robozoo-experiment"), "--out", out, "--workers", "1", "--progress-interval", "0"};
   a.insert(a.end(), sizes.begin(), sizes.end());
   return a;
-}
-
-std::string shell(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const auto& x : argv) s += "'" + x + "' ";
-  return s;
 }
 
 struct FileStamp {
@@ -42,7 +37,7 @@ const std::vector<std::string> kTiny = {"--trials", "1", "--population", "10", "
 
 TEST(ExperimentCli, AFinishedExperimentIsNotRedone) {
   TempDir dir;
-  const auto first = run_shell(shell(driver(dir.path, kTiny)));
+  const auto first = run_shell(join(driver(dir.path, kTiny)));
   ASSERT_EQ(first.status, 0) << first.output;
   EXPECT_NE(first.output.find("0 finished (skipped), 0 to resume, 2 to start"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("experiment 100.0%"), std::string::npos) << first.output;
@@ -50,7 +45,7 @@ TEST(ExperimentCli, AFinishedExperimentIsNotRedone) {
   ASSERT_FALSE(ff.content.empty());
   ASSERT_TRUE(read_checkpoint(dir / "recurrent-s2.lcmlog.checkpoint").finished);
 
-  const auto again = run_shell(shell(driver(dir.path, kTiny)));
+  const auto again = run_shell(join(driver(dir.path, kTiny)));
   EXPECT_EQ(again.status, 0) << again.output;
   EXPECT_NE(again.output.find("2 finished (skipped), 0 to resume, 0 to start"), std::string::npos) << again.output;
   EXPECT_EQ(again.output.find("starting"), std::string::npos) << again.output;
@@ -60,20 +55,20 @@ TEST(ExperimentCli, AFinishedExperimentIsNotRedone) {
   // More trials later: only the new ones run.
   std::vector<std::string> more = kTiny;
   more[1] = "2";
-  const auto extended = run_shell(shell(driver(dir.path, more)));
+  const auto extended = run_shell(join(driver(dir.path, more)));
   EXPECT_EQ(extended.status, 0) << extended.output;
   EXPECT_NE(extended.output.find("2 finished (skipped), 0 to resume, 2 to start"), std::string::npos);
   EXPECT_TRUE(stamp(dir / "feedforward-s1.lcmlog") == ff);
   EXPECT_TRUE(file_exists(dir / "recurrent-s5.lcmlog"));
 
-  const auto status = run_shell(shell(driver(dir.path, more)) + " --status");
+  const auto status = run_shell(join(driver(dir.path, more)) + " --status");
   EXPECT_EQ(status.status, 0);
   EXPECT_NE(status.output.find("recurrent-s5          finished         2/2"), std::string::npos) << status.output;
 
   // Other sizes in the same folder: refused before anything runs.
   std::vector<std::string> other = kTiny;
   other[3] = "12";
-  const auto refused = run_shell(shell(driver(dir.path, other)));
+  const auto refused = run_shell(join(driver(dir.path, other)));
   EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.output.find("belongs to another experiment: it was started with population 10, not 12"),
             std::string::npos)
@@ -102,7 +97,7 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
   // No robozoo-evolve is left running on the folder.
   EXPECT_EQ(processes_left(dir.path + "/[r]ecurrent-s1.lcmlog"), "");
 
-  const auto resumed = run_shell(shell(driver(dir.path, sizes)));
+  const auto resumed = run_shell(join(driver(dir.path, sizes)));
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("1 finished (skipped), 1 to resume, 0 to start"), std::string::npos) << resumed.output;
   EXPECT_NE(resumed.output.find("recurrent-s2: resuming after generation"), std::string::npos) << resumed.output;
@@ -111,7 +106,7 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
   EXPECT_TRUE(read_checkpoint(rec_cp).finished);
 
   // The resumed trial equals an uninterrupted run, message for message.
-  const auto reference = run_shell(shell({bin("robozoo-evolve"), "--log", ref / "rec.lcmlog", "--regime", "recurrent",
+  const auto reference = run_shell(join({bin("robozoo-evolve"), "--log", ref / "rec.lcmlog", "--regime", "recurrent",
                                           "--seed", "2", "--population", "16", "--generations", "4", "--steps", "300",
                                           "--workers", "1", "--quiet"}));
   ASSERT_EQ(reference.status, 0) << reference.output;
@@ -121,7 +116,7 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
 TEST(ExperimentCli, UsageErrors) {
   TempDir dir;
   EXPECT_EQ(run_shell(bin("robozoo-experiment") + " --trials 2").status, 106);  // CLI11: --out is required
-  const auto no_evolve = run_shell(shell(driver(dir.path, kTiny)) + " --evolve /nonexistent/robozoo-evolve");
+  const auto no_evolve = run_shell(join(driver(dir.path, kTiny)) + " --evolve /nonexistent/robozoo-evolve");
   EXPECT_EQ(no_evolve.status, 2);
   EXPECT_NE(no_evolve.output.find("cannot run /nonexistent/robozoo-evolve"), std::string::npos);
   const auto help = run_shell(bin("robozoo-experiment") + " --help");

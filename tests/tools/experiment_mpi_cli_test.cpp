@@ -12,18 +12,13 @@
 #include "evolve/io/log_compare.hpp"
 #include "evolve/run/checkpoint.hpp"
 #include "tests/support/mpirun.hpp"
+#include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo {
 namespace {
 
 using namespace robozoo::testing;
-
-std::string shell(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const auto& x : argv) s += "'" + x + "' ";
-  return s;
-}
 
 /// The tests' mpirun and its options, as one --mpirun value (without -np N).
 std::string launcher() {
@@ -47,14 +42,14 @@ LogContents local_trial(const TempDir& dir, const std::string& regime,
   std::vector<std::string> a = {bin("robozoo-evolve"), "--log", dir / (regime + ".lcmlog"), "--regime", regime,
                                 "--seed", regime == "recurrent" ? "2" : "1", "--workers", "1", "--quiet"};
   a.insert(a.end(), sizes.begin(), sizes.end());
-  const auto r = run_shell(shell(a));
+  const auto r = run_shell(join(a));
   EXPECT_EQ(r.status, 0) << r.output;
   return read_event_log(dir / (regime + ".lcmlog"));
 }
 
 TEST(ExperimentMpiCli, TrialsRunAsMpiJobsAndEqualLocalTrials) {
   TempDir dir, ref;
-  const auto r = run_shell(shell(mpi_driver(dir.path, 3, {"--trials", "1", "--population", "10", "--generations", "2",
+  const auto r = run_shell(join(mpi_driver(dir.path, 3, {"--trials", "1", "--population", "10", "--generations", "2",
                                                           "--steps", "200"})));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("MPI jobs of 3 ranks"), std::string::npos) << r.output;
@@ -93,7 +88,7 @@ TEST(ExperimentMpiCli, AStoppedMpiExperimentLeavesNoRankAndResumesOnOtherRanks) 
   EXPECT_EQ(processes_left(dir.path + "/[r]ecurrent-s1.lcmlog"), "");
 
   // Resumed with 3 ranks: the stopped trial ends equal to an uninterrupted local run.
-  const auto resumed = run_shell(shell(mpi_driver(dir.path, 3, sizes)));
+  const auto resumed = run_shell(join(mpi_driver(dir.path, 3, sizes)));
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("1 finished (skipped), 1 to resume, 0 to start"), std::string::npos)
       << resumed.output;
@@ -111,7 +106,7 @@ TEST(ExperimentMpiCli, BadMpiSettingsAreRefusedBeforeAnythingRuns) {
     std::vector<std::string> a = {bin("robozoo-experiment"), "--out", dir.path};
     a.insert(a.end(), tiny.begin(), tiny.end());
     a.insert(a.end(), extra.begin(), extra.end());
-    return run_shell(shell(a));
+    return run_shell(join(a));
   };
   const auto one_rank = with({"--mpi", "1"});
   EXPECT_NE(one_rank.status, 0);
@@ -140,7 +135,7 @@ TEST(ExperimentMpiCli, AFailedMpiJobIsReportedWithItsLastWords) {
     f << "#!/bin/sh\necho \"fake-mpirun: not enough slots for $2 ranks\"\nexit 1\n";
   }
   ::chmod(fake.c_str(), 0755);
-  const auto r = run_shell(shell({bin("robozoo-experiment"), "--out", dir / "exp", "--trials", "1", "--population",
+  const auto r = run_shell(join({bin("robozoo-experiment"), "--out", dir / "exp", "--trials", "1", "--population",
                                   "10", "--generations", "2", "--mpi", "4", "--mpirun", fake}));
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("the MPI job of robozoo-evolve failed on feedforward-s1 (exit status 1)"),

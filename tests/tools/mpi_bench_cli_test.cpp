@@ -11,18 +11,13 @@
 
 #include "evolve/run/checkpoint.hpp"
 #include "tests/support/mpirun.hpp"
+#include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo {
 namespace {
 
 using namespace robozoo::testing;
-
-std::string shell(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const auto& x : argv) s += "'" + x + "' ";
-  return s;
-}
 
 const std::vector<std::string> kSizes = {"--population", "10", "--steps", "200"};
 
@@ -53,7 +48,7 @@ TEST(MpiBenchCli, ResumeMeasuresTheNextGenerationsOfALoggedRunOnACopy) {
   const int at = static_cast<int>(before.evaluations / 10);
   const std::string log_bytes = read_file(log), checkpoint_bytes = read_file(log + ".checkpoint");
 
-  const auto r = run_shell(shell(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log, "--generations", "2",
+  const auto r = run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log, "--generations", "2",
                                                   "--project", "4", "--json", dir / "b.json"})));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("generations " + std::to_string(at) + "-" + std::to_string(at + 1) + " of " + log),
@@ -80,16 +75,16 @@ TEST(MpiBenchCli, ResumeRefusesAFinishedRunAndFlagsOfAnotherRun) {
   const std::string log = dir / "done.lcmlog";
   std::vector<std::string> a = {bin("robozoo-evolve"), "--log", log, "--workers", "1", "--quiet", "--generations", "1"};
   a.insert(a.end(), kSizes.begin(), kSizes.end());
-  ASSERT_EQ(run_shell(shell(a)).status, 0);
-  const auto finished = run_shell(shell(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log})));
+  ASSERT_EQ(run_shell(join(a)).status, 0);
+  const auto finished = run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log})));
   EXPECT_NE(finished.status, 0);
   EXPECT_NE(finished.output.find("finished run"), std::string::npos) << finished.output;
 
-  const auto seed = run_shell(shell(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log, "--seed", "3"})));
+  const auto seed = run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log, "--seed", "3"})));
   EXPECT_NE(seed.status, 0);
   EXPECT_NE(seed.output.find("excludes"), std::string::npos) << seed.output;
   const auto missing =
-      run_shell(shell(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", dir / "none.lcmlog"})));
+      run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", dir / "none.lcmlog"})));
   EXPECT_NE(missing.status, 0);
   EXPECT_NE(missing.output.find("no file"), std::string::npos) << missing.output;
 }
