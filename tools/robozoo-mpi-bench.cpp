@@ -193,8 +193,12 @@ void copy_run(const std::string& log, const std::string& dest) {
   namespace fs = std::filesystem;
   for (const std::string& suffix : {std::string(), std::string(".checkpoint")}) {
     if (!fs::is_regular_file(log + suffix)) throw std::runtime_error("--resume: no file " + log + suffix);
-    fs::copy_file(log + suffix, dest + suffix, fs::copy_options::overwrite_existing);
+    if (fs::exists(dest + suffix))
+      throw std::runtime_error("--log " + dest + ": " + dest + suffix +
+                               " exists already; --resume measures on a copy of the run and will not overwrite a file");
   }
+  for (const std::string& suffix : {std::string(), std::string(".checkpoint")})
+    fs::copy_file(log + suffix, dest + suffix);
 }
 
 int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
@@ -499,7 +503,7 @@ int main(int argc, char** argv) {
   app.add_option("--steps", o.steps, "physics steps per evaluation (default 2500, the paper's)")
       ->check(CLI::Range(1, 1000000000));
   app.add_option("--config", o.config_file, "configuration file (.json or .toml); flags given override it");
-  app.add_option("--log", o.log_path, "keep the run's log here (default: a temporary folder, removed)");
+  app.add_option("--log", o.log_path, "keep the run's log here (default: a temporary folder, removed); with --resume, where the copy goes (must not exist)");
   app.add_option("--lcm-url", o.lcm_url, "publish live on this LCM URL while measuring (default: no publishing)");
   app.add_option("--project", ranks_text, "rank counts to project to, comma-separated (default 8,32,128)");
   app.add_option("--latency-us", o.latency_us, "one-way message latency of the cluster (us, default 50: TCP)")

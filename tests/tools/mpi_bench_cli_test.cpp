@@ -87,6 +87,12 @@ TEST(MpiBenchCli, ResumeRefusesAFinishedRunAndFlagsOfAnotherRun) {
       run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", dir / "none.lcmlog"})));
   EXPECT_NE(missing.status, 0);
   EXPECT_NE(missing.output.find("no file"), std::string::npos) << missing.output;
+  // --log names where the copy goes: an existing file there is not overwritten.
+  const std::string before = read_file(log);
+  const auto onto = run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log, "--log", log})));
+  EXPECT_NE(onto.status, 0);
+  EXPECT_NE(onto.output.find("exists already"), std::string::npos) << onto.output;
+  EXPECT_EQ(read_file(log), before);
 }
 
 }  // namespace
