@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace robozoo::render {
@@ -43,6 +45,29 @@ TEST(Image, FillRectAndPasteAreClipped) {
   EXPECT_EQ(dst.at(1, 1), (Rgb{7, 8, 9}));
   EXPECT_EQ(dst.at(2, 0), (Rgb{0, 0, 0}));
   EXPECT_EQ(dst.at(2, 2), (Rgb{0, 0, 0}));
+}
+
+
+TEST(Image, TranslucentFillRectIsBlendOnEachPixel) {
+  // fill_rect looks blended bytes up in a table; blend() computes each pixel.
+  Image base(40, 30);
+  uint32_t state = 12345;
+  auto next = [&] { return static_cast<uint8_t>((state = state * 1103515245u + 12345u) >> 23); };
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) base.set(x, y, {next(), next(), next()});
+  for (const double a : {0.0, -0.5, 1e-9, 0.13, 0.5, 0.5 + 1e-12, 0.85, 0.999, 1.0, 2.0, std::nan("")}) {
+    Image by_rect = base, by_pixel = base;
+    const Rgb c{next(), next(), next()};
+    by_rect.fill_rect(-3, 5, 30, 40, c, a);
+    for (int y = 5; y < 30; ++y)
+      for (int x = 0; x < 27; ++x) {
+        if (a >= 1.0)
+          by_pixel.set(x, y, c);
+        else
+          by_pixel.blend(x, y, c, a);
+      }
+    EXPECT_EQ(by_rect.bytes(), by_pixel.bytes()) << "alpha " << a;
+  }
 }
 
 }  // namespace
