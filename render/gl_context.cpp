@@ -118,11 +118,9 @@ void GlContext::read_image(Image& out) {
   for (int y = 0; y < height_; ++y) {
     const unsigned char* src = buffer_.data() + static_cast<size_t>(height_ - 1 - y) * width_ * 4;
     uint8_t* dst = out.row(y);
-    for (int x = 0; x < width_; ++x) {
-      dst[3 * x] = src[4 * x];
-      dst[3 * x + 1] = src[4 * x + 1];
-      dst[3 * x + 2] = src[4 * x + 2];
-    }
+    // Four bytes a pixel, the fourth overwritten by the next pixel's red.
+    for (int x = 0; x + 1 < width_; ++x) std::memcpy(dst + 3 * x, src + 4 * x, 4);
+    std::memcpy(dst + 3 * (width_ - 1), src + 4 * (width_ - 1), 3);
   }
 }
 

@@ -41,6 +41,33 @@ size_t draw_target_pole(const GpuMesh& cylinder, const GpuMesh& ball, double x, 
          draw_placed(ball, {x, y, h}, 0.08 * h, 0.08 * h, 0.08 * h);
 }
 
+/// Stencil bit of the pixels an opaque object covers (the background skips them).
+constexpr GLuint kCovered = 0x80;
+
+/// The background: a vertical gradient from the sky's top to the horizon
+/// colour over the whole picture, drawn with identity matrices and no depth test.
+void draw_background(const SceneStyle& st) {
+  glDisable(GL_DEPTH_TEST);
+  glMatrixMode(GL_PROJECTION);
+  glPushMatrix();
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glPushMatrix();
+  glLoadIdentity();
+  glBegin(GL_QUADS);
+  color(st.horizon);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  color(st.sky_top);
+  glVertex2f(1, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+  glMatrixMode(GL_PROJECTION);
+  glPopMatrix();
+  glMatrixMode(GL_MODELVIEW);
+  glPopMatrix();
+}
+
 }  // namespace
 
 struct SceneRenderer::Impl {
@@ -65,21 +92,8 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
   glClearStencil(0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
-  // Background: a vertical gradient from the sky's top to the horizon colour.
-  glDisable(GL_DEPTH_TEST);
   glDisable(GL_LIGHTING);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  glBegin(GL_QUADS);
-  color(st.horizon);
-  glVertex2f(-1, -1);
-  glVertex2f(1, -1);
-  color(st.sky_top);
-  glVertex2f(1, 1);
-  glVertex2f(-1, 1);
-  glEnd();
+  if (!background_last_) draw_background(st);
 
   const double aspect = static_cast<double>(width) / height;
   const Eigen::Matrix4d proj = projection_matrix(camera, aspect);
@@ -112,6 +126,15 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
     const double px = s.radius * focal_px / depth;
     return px < 10 ? 1 : px < 42 ? 2 : px < 166 ? 3 : 4;
   };
+
+  // Every opaque object marks the pixels it covers, so that the background
+  // is drawn afterwards only where nothing is: the same picture as drawing it
+  // first under everything, without shading the pixels the ground covers twice.
+  if (background_last_) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, kCovered, kCovered);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  }
 
   // Target marker: a ring on the ground and a pole with a ball on top.
   if (view.show_target) {
@@ -158,6 +181,13 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
   last_triangles_ += 2;
 
   ShaderProgram::unuse();
+  if (background_last_) {
+    glStencilFunc(GL_EQUAL, 0, kCovered);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    draw_background(st);
+    glEnable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+  }
 
   // Shadows: every object flattened onto the ground along the key light, each
   // ground pixel darkened once (stencil), drawn after the spheres so the
@@ -170,7 +200,7 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
     shadow(1, 2) = -L.y() / L.z();
     shadow(2, 2) = 0.0;
     glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glStencilFunc(GL_EQUAL, 0, kCovered - 1);  // the low bits count shadows
     glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

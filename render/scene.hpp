@@ -61,12 +61,17 @@ class SceneRenderer {
   const SceneStyle& style() const { return style_; }
   /// Triangles drawn by the last draw() (for the benchmark).
   size_t last_triangles() const { return last_triangles_; }
+  /// Draws the background after the objects, only where none is (true, the
+  /// default), or first under everything (false: the plain way, kept as the
+  /// reference its tests compare with; both give the same pixels).
+  void set_background_last(bool last) { background_last_ = last; }
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   SceneStyle style_;
   size_t last_triangles_ = 0;
+  bool background_last_ = true;
 };
 
 }  // namespace robozoo::render
