@@ -52,9 +52,9 @@ uniform vec3 u_fog_color;
 uniform vec2 u_fog_range;
 uniform float u_grid;
 // Anti-aliased lines about a pixel wide at any distance, fading out where
-// cells shrink to a few pixels (no moire towards the horizon).
-float grid_lines(vec2 c) {
-  vec2 w = max(fwidth(c), vec2(1e-5));
+// cells shrink to a few pixels (no moire towards the horizon). w: fwidth(c),
+// at least 1e-5.
+float grid_lines(vec2 c, vec2 w) {
   vec2 d = abs(fract(c - 0.5) - 0.5) / w;
   float line = 1.0 - clamp(min(d.x, d.y) - 0.2, 0.0, 1.0);
   return line * clamp(1.6 - 8.0 * max(w.x, w.y), 0.0, 1.0);
@@ -63,7 +63,10 @@ void main() {
   vec3 c = gl_Color.rgb;
   if (u_grid > 0.5) {
     vec2 t = gl_TexCoord[0].st;
-    c *= 1.0 - 0.16 * grid_lines(t) - 0.20 * grid_lines(t * 0.5);
+    vec2 f = fwidth(t);
+    // fwidth(t * 0.5) is 0.5 * fwidth(t) to the bit (halving is exact), so
+    // the coarse grid reuses the fine grid's derivatives.
+    c *= 1.0 - 0.16 * grid_lines(t, max(f, vec2(1e-5))) - 0.20 * grid_lines(t * 0.5, max(0.5 * f, vec2(1e-5)));
   }
   float fog = clamp((u_fog_range.y - length(v_eye)) / (u_fog_range.y - u_fog_range.x), 0.0, 1.0);
   gl_FragColor = vec4(mix(u_fog_color, c, fog), 1.0);
