@@ -58,22 +58,33 @@ BenchFigures run_bench(const BenchOptions& o) {
   f.samples = stage.context().samples();
   f.renderer = stage.context().renderer();
 
-  // Drawing: the first `frames` frames of the champion's video.
+  // Drawing: the first `frames` frames of the champion's video, each drawn
+  // twice in turn: as videos draw it (background last) and with the
+  // background drawn first under everything (the way before, the baseline).
   std::vector<Image> frames;
   {
     VideoFrames vf(subject, o.video, stage);
-    VideoStats s;
-    Image img;
-    double cpu = 0;
+    VideoFrames before(subject, o.video, stage);
+    VideoStats s, s_before;
+    Image img, img_before;
+    double cpu = 0, cpu_before = 0;
     for (int i = 0; i < o.frames; ++i) {
-      const double c0 = process_cpu_seconds();
+      stage.scene().set_background_last(false);
+      double c0 = process_cpu_seconds();
+      if (!before.next(img_before, &s_before)) break;
+      cpu_before += process_cpu_seconds() - c0;
+      stage.scene().set_background_last(true);
+      c0 = process_cpu_seconds();
       if (!vf.next(img, &s)) break;
       cpu += process_cpu_seconds() - c0;
+      if (img.bytes() != img_before.bytes()) ++f.frames_differing;
       frames.push_back(img);
     }
+    f.drawn_frames = static_cast<int>(frames.size());
     f.draw_fps = frames.size() / s.draw_seconds;
     // (overlay included: a few percent of a frame's CPU time)
     f.draw_cpu_ms = 1e3 * cpu / static_cast<double>(frames.size());
+    f.draw_cpu_ms_before = 1e3 * cpu_before / static_cast<double>(frames.size());
     f.overlay_fps = s.overlay_seconds > 0 ? frames.size() / s.overlay_seconds : 0;
   }
   const std::string dir = o.scratch.empty() ? "/tmp" : o.scratch;
@@ -122,15 +133,18 @@ void print(std::ostream& out, const BenchFigures& f) {
   std::snprintf(buf, sizeof buf,
                 "renderer         %s\n"
                 "size             %dx%d, %d samples per pixel, robot of %d spheres\n"
-                "drawing          %.1f frames/s (scene + read-back), %.1f ms of CPU a frame\n"
+                "drawing          %.1f frames/s (scene + read-back), %.1f ms of CPU a frame; "
+                "%.1f ms with the background drawn first (before), %d of %d frames differing\n"
                 "overlay          %.1f frames/s (text and panels alone)\n"
-                "encoding         %.1f frames/s (yuv420p + H.264 + MP4), %.1f ms of CPU a frame\n"
+                "encoding         %.1f frames/s (yuv420p + H.264 + MP4), %.1f ms of CPU a frame: "
+                "%.1f s for the whole video on the encoding thread alone\n"
                 "champion video   %d frames, %d steps = %.1f s simulated, made in %.1f s wall: %.2fx real time%s\n"
                 "                 CPU %.1f s (%.1f ms a frame), %.2f of %d cores busy\n"
                 "baseline         the same video drawn and encoded in turn: %.1f s wall, CPU %.1f s "
                 "(%.2f cores busy); side by side is %.2fx faster\n",
-                f.renderer.c_str(), f.width, f.height, f.samples, f.spheres, f.draw_fps, f.draw_cpu_ms, f.overlay_fps,
-                f.encode_fps, f.encode_cpu_ms, f.video_frames, f.video_steps, f.video_sim_seconds,
+                f.renderer.c_str(), f.width, f.height, f.samples, f.spheres, f.draw_fps, f.draw_cpu_ms,
+                f.draw_cpu_ms_before, f.frames_differing, f.drawn_frames, f.overlay_fps, f.encode_fps, f.encode_cpu_ms,
+                f.video_frames / (f.encode_fps > 0 ? f.encode_fps : 1.0), f.video_frames, f.video_steps, f.video_sim_seconds,
                 f.video_wall_seconds, f.video_wall_seconds > 0 ? f.video_sim_seconds / f.video_wall_seconds : 0.0,
                 f.resimulated ? " (re-simulated)" : "", f.video_cpu_seconds, 1e3 * f.video_cpu_seconds / n,
                 f.video_wall_seconds > 0 ? f.video_cpu_seconds / f.video_wall_seconds : 0.0, f.cores,

@@ -30,6 +30,9 @@ struct BenchFigures {
   double serial_wall_seconds = 0; ///< the same video drawn and encoded in turn on one thread (s): the baseline
   double serial_cpu_seconds = 0;  ///< CPU time of every thread meanwhile (s)
   double draw_cpu_ms = 0;        ///< CPU time per frame of drawing + read-back, every thread (ms)
+  double draw_cpu_ms_before = 0; ///< the same with the background drawn first, as before (ms): the baseline
+  int drawn_frames = 0;          ///< frames drawn both ways (count)
+  int frames_differing = 0;      ///< of those, frames whose pixels differ between the two ways (count; 0 expected)
   double encode_cpu_ms = 0;      ///< CPU time per frame of encoding, every thread (ms)
   int cores = 0;                 ///< cores this process may run on (count)
   bool resimulated = false;      ///< the trajectory had to be re-simulated

@@ -14,8 +14,9 @@ namespace {
 
 using robozoo::testing::TempDir;
 
-// The benchmark makes the champion's video twice, side by side and in turn (its
-// baseline), and reports each one's wall and CPU time; it leaves no file behind.
+// The benchmark draws frames with the background last and first (its drawing
+// baseline), makes the champion's video twice, side by side and in turn (its
+// video baseline), and reports each one's wall and CPU time; it leaves no file behind.
 TEST(RenderBench, MeasuresBothWaysOfMakingTheVideoAndCleansUp) {
   TempDir dir;
   testing::write_small_run(dir / "run.lcmlog");
@@ -33,6 +34,9 @@ TEST(RenderBench, MeasuresBothWaysOfMakingTheVideoAndCleansUp) {
   EXPECT_GT(f.draw_fps, 0);
   EXPECT_GT(f.encode_fps, 0);
   EXPECT_GT(f.draw_cpu_ms, 0);
+  EXPECT_GT(f.draw_cpu_ms_before, 0);
+  EXPECT_EQ(f.drawn_frames, 5);
+  EXPECT_EQ(f.frames_differing, 0);  // the background's order changes no pixel
   EXPECT_GT(f.encode_cpu_ms, 0);
   EXPECT_GT(f.video_frames, 1);
   EXPECT_GT(f.video_wall_seconds, 0);
@@ -45,6 +49,8 @@ TEST(RenderBench, MeasuresBothWaysOfMakingTheVideoAndCleansUp) {
   print(out, f);
   EXPECT_NE(out.str().find("baseline"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("cores busy"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("background drawn first"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("encoding thread alone"), std::string::npos) << out.str();
 }
 
 }  // namespace
