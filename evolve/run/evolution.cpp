@@ -136,7 +136,6 @@ void Evolution::save_checkpoint() {
   c.elapsed_seconds = elapsed_before_ + elapsed_;
   c.finished = finished_;
   checkpoint_writer_->write(std::move(c), generations_done());
-  if (finished_) checkpoint_writer_->wait();  // a finished run's last checkpoint is on disk
 }
 
 void Evolution::run(const std::function<void(const ProgressReport&)>& on_generation) {
@@ -144,10 +143,9 @@ void Evolution::run(const std::function<void(const ProgressReport&)>& on_generat
   }
 }
 
-std::vector<pose_t> Evolution::champion_trajectory(const Genome& champion, int32_t generation,
+std::vector<pose_t> Evolution::champion_trajectory(const Genome& champion, const Robot& robot, int32_t generation,
                                                    const EvalSummary& expected) const {
-  Trajectory t = simulate_trajectory(grow_genome(champion, config_.eval), config_.eval.sim, config_.pose_every, run_id_,
-                                     generation, champion.id);
+  Trajectory t = simulate_trajectory(robot, config_.eval.sim, config_.pose_every, run_id_, generation, champion.id);
   const SimResult& r = t.result;
   // The trajectory must be exactly the evaluation the worker made.
   if (r.d != expected.d || static_cast<int>(r.outcome) != static_cast<int>(expected.outcome) ||
@@ -233,7 +231,7 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   tm = std::chrono::steady_clock::now();
   std::vector<pose_t> poses;
   if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated)
-    poses = champion_trajectory(champion, gen, results[champ]);
+    poses = champion_trajectory(champion, robots.front(), gen, results[champ]);  // published[0] is the champion
   last_champion_hash_ = champion_hash;
   timing.trajectory = seconds_since(tm);
 
@@ -293,6 +291,11 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   tm = std::chrono::steady_clock::now();
   save_checkpoint();
   timing.checkpoint = seconds_since(tm);
+  if (finished_) {
+    tm = std::chrono::steady_clock::now();
+    checkpoint_writer_->wait();  // a finished run's last checkpoint is on disk
+    timing.final_checkpoint = seconds_since(tm);
+  }
   timing.total = seconds_since(t0);
   report.timings = timing;
 

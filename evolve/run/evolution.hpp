@@ -43,7 +43,12 @@ struct StepTimings {
   double trajectory = 0.0;  ///< re-simulating a new champion and logging its poses (s)
   double breeding = 0.0;    ///< selection, speciation and reproduction: Population::advance (s)
   double checkpoint = 0.0;  ///< syncing the log to disk and writing the checkpoint (s)
-  double total = 0.0;       ///< the whole generation, evaluation included (s)
+  double final_checkpoint = 0.0;  ///< the run's last generation only: waiting until its last checkpoint,
+                                  ///< written in the background, is on disk (s; once a run)
+  double total = 0.0;       ///< the whole generation, evaluation and final_checkpoint included (s)
+  /// Rank 0's serial part of a generation: all but the evaluation and the
+  /// once-a-run final wait (s).
+  double serial() const { return total - evaluate - final_checkpoint; }
 };
 
 /// What happened in one generation (for progress output and tests).
@@ -106,9 +111,10 @@ class Evolution {
   void emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime);
   void save_checkpoint();
   int generations_done() const;  ///< finished generations: what a checkpoint now would hold
-  /// Re-simulates a new champion: its pose messages (utime 0, set when sent),
+  /// Re-simulates a new champion (`robot`: grown from it once, for its
+  /// morphology message too): its pose messages (utime 0, set when sent),
   /// after checking that the simulation is exactly the worker's evaluation.
-  std::vector<pose_t> champion_trajectory(const Genome& champion, int32_t generation,
+  std::vector<pose_t> champion_trajectory(const Genome& champion, const Robot& robot, int32_t generation,
                                           const EvalSummary& expected) const;
 
   RunConfig config_;
