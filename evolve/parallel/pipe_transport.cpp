@@ -261,6 +261,9 @@ void PipeTransport::discard(int w) {
 
 void PipeTransport::bury(int w, const std::string& why, bool kill_now) {
   Slot& slot = slots_[static_cast<size_t>(w)];
+  // Killed before its socket closes: a worker that reads end-of-file exits on
+  // its own, and would be reported as having exited normally.
+  if (kill_now && slot.pid > 0) ::kill(slot.pid, SIGKILL);
   close_fd(slot.fd);
   slot.out.clear();
   slot.out_sent = 0;
@@ -269,9 +272,7 @@ void PipeTransport::bury(int w, const std::string& why, bool kill_now) {
   if (slot.pid > 0) {
     int status = 0;
     pid_t r = 0;
-    if (kill_now) {
-      ::kill(slot.pid, SIGKILL);
-    } else {
+    if (!kill_now) {
       const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                                std::chrono::duration<double>(kExitWaitS));
       while ((r = wait_for(slot.pid, &status, WNOHANG)) == 0 && Clock::now() < deadline)
