@@ -64,6 +64,7 @@ struct Options {
   int synthetic_generations = 50;
   int trial_ranks = 8;
   bool foreground_checkpoint = false;
+  bool serial_trajectory = false;
   std::string json_path;
   std::string resume_log;  // continue this logged run (a copy) instead of starting one
   bool force_version = false;
@@ -125,6 +126,7 @@ class RecordingEvaluator : public Evaluator {
     return results;
   }
   int parallelism() const override { return inner_.parallelism(); }
+  bool simulates_in_process() const override { return inner_.simulates_in_process(); }
   std::vector<GenerationRecord> records;
 
  private:
@@ -223,6 +225,7 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
   }
   opts.lcm_url = o.lcm_url;
   opts.background_checkpoint = !o.foreground_checkpoint;  // as robozoo-evolve --mpi, unless asked
+  opts.overlap_trajectory = !o.serial_trajectory;         // the same
   if (!o.resume_log.empty()) {
     copy_run(o.resume_log, opts.log_path);
     opts.resume = true;
@@ -286,7 +289,8 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                 {"resumed_at_generation", resumed_at},
                 {"steps", config.eval.sim.steps},
                 {"seed", config.seed},
-                {"background_checkpoint", opts.background_checkpoint}};
+                {"background_checkpoint", opts.background_checkpoint},
+                {"overlap_trajectory", opts.overlap_trajectory}};
   std::printf("robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %zu generations "
               "of up to %d steps, seed %lld",
               session.size(), session.host().c_str(), session.size() - 1, regime_name(config.regime).c_str(),
@@ -527,6 +531,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(2, 1000000));
   app.add_flag("--foreground-checkpoint", o.foreground_checkpoint,
                "write checkpoints within the generation, as a local run does (to compare)");
+  app.add_flag("--serial-trajectory", o.serial_trajectory,
+               "re-simulate a new champion for its poses within the generation, as a local run does, instead "
+               "of while the next generation is evaluated (to compare)");
   app.add_option("--json", o.json_path, "also write every figure to this JSON file");
   auto* resume =
       app.add_option("--resume", o.resume_log,

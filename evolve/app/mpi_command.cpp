@@ -45,6 +45,8 @@ int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& ses
     if (const auto status = resolve_run(app, o, config, opts)) return *status;
     // Rank 0's largest serial cost, overlapped with the next generation's evaluations.
     opts.background_checkpoint = true;
+    // And the next largest: a new champion's re-simulation for its pose stream.
+    opts.overlap_trajectory = true;
     std::unique_ptr<Evolution> evo;
     if (const auto status = open_evolution(config, opts, evaluator, evo)) return *status;
     // Said when mpirun stops rank 0, made then (the checkpoint may be on its way);

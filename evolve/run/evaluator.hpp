@@ -15,6 +15,10 @@ class Evaluator {
   virtual std::vector<EvalSummary> evaluate(const std::vector<Genome>& genomes) = 0;
   /// Number of evaluations running at once.
   virtual int parallelism() const = 0;
+  /// Whether evaluate() simulates in this process. ODE's state is partly
+  /// process-wide (the seed of its random constraint order), so nothing else
+  /// may simulate in this process while such an evaluator does.
+  virtual bool simulates_in_process() const { return true; }
 };
 
 /// Evaluates in this process, one after the other (tests, debugging).

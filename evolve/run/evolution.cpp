@@ -58,6 +58,10 @@ std::string format_progress(const ProgressReport& r) {
 Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Evaluator& evaluator)
     : config_(config), options_(options), evaluator_(evaluator) {
   if (options_.log_path.empty()) throw std::runtime_error("no log path given");
+  if (options_.overlap_trajectory && evaluator_.simulates_in_process())
+    throw std::invalid_argument(
+        "overlap_trajectory needs an evaluator whose simulations run in other processes: ODE's random "
+        "constraint order is process-wide, so two simulations at once in one process differ");
   checkpoint_path_ = options_.checkpoint_path.empty() ? options_.log_path + ".checkpoint"
                                                       : options_.checkpoint_path;
   const GenomeLayout layout = robot_layout();
@@ -120,7 +124,9 @@ void Evolution::emit(const char* channel, const std::vector<uint8_t>& bytes, int
   if (bus_) bus_->publish(channel, bytes);
 }
 
-void Evolution::save_checkpoint() {
+void Evolution::save_checkpoint() { checkpoint_writer_->write(make_checkpoint(), generations_done()); }
+
+Checkpoint Evolution::make_checkpoint() {
   log_->sync();
   Checkpoint c;
   c.run_id = run_id_;
@@ -135,7 +141,39 @@ void Evolution::save_checkpoint() {
   c.log_events = log_->events();
   c.elapsed_seconds = elapsed_before_ + elapsed_;
   c.finished = finished_;
-  checkpoint_writer_->write(std::move(c), generations_done());
+  return c;
+}
+
+void Evolution::emit_poses(std::vector<pose_t>& poses) {
+  for (pose_t& p : poses) {
+    p.utime = now_us();
+    emit(kChannelPose, encode_message(p), p.utime);
+  }
+}
+
+double Evolution::finish_trajectory() {
+  if (!pending_poses_.valid()) return 0.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<pose_t> poses = pending_poses_.get();  // rethrows the re-simulation's failure
+  emit_poses(poses);
+  // The generation's checkpoint, now that its poses are in the log; written
+  // at the end of this step unless this generation's own replaces it.
+  held_checkpoint_ = make_checkpoint();
+  held_generations_ = generations_done();
+  return seconds_since(t0);
+}
+
+void Evolution::write_held_checkpoint() {
+  if (!held_checkpoint_) return;
+  Checkpoint c = std::move(*held_checkpoint_);
+  held_checkpoint_.reset();
+  checkpoint_writer_->write(std::move(c), held_generations_);
+}
+
+void Evolution::wait_for_checkpoint() {
+  finish_trajectory();
+  write_held_checkpoint();
+  checkpoint_writer_->wait();
 }
 
 void Evolution::run(const std::function<void(const ProgressReport&)>& on_generation) {
@@ -170,14 +208,25 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
 
   StepTimings timing;
   auto tm = std::chrono::steady_clock::now();
-  const int64_t t_run = now_us();
-  emit(kChannelRun, encode_message(make_run_message(run_id_, config_, t_run)), t_run);
-  timing.messages += seconds_since(tm);
+  const auto emit_run = [&] {
+    tm = std::chrono::steady_clock::now();
+    const int64_t t_run = now_us();
+    emit(kChannelRun, encode_message(make_run_message(run_id_, config_, t_run)), t_run);
+    timing.messages += seconds_since(tm);
+  };
+  // With the previous generation's champion still simulating, its poses come
+  // first in the log: this generation's run message follows them.
+  const bool overlapped = pending_poses_.valid();
+  if (!overlapped) emit_run();
 
   const auto te = std::chrono::steady_clock::now();
   const std::vector<EvalSummary> results = evaluator_.evaluate(genomes);
   const double eval_seconds = seconds_since(te);
   timing.evaluate = eval_seconds;
+  if (overlapped) {
+    timing.trajectory += finish_trajectory();
+    emit_run();
+  }
   if (results.size() != genomes.size())
     throw std::logic_error("evaluator returned " + std::to_string(results.size()) + " results for " +
                            std::to_string(genomes.size()) + " genomes");
@@ -230,14 +279,21 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   const uint64_t champion_hash = trajectory_key(champion);
   tm = std::chrono::steady_clock::now();
   std::vector<pose_t> poses;
-  if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated)
-    poses = champion_trajectory(champion, robots.front(), gen, results[champ]);  // published[0] is the champion
+  const bool last = gen + 1 >= config_.generations;
+  if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated) {
+    if (options_.overlap_trajectory && !last) {
+      // On a thread of its own, while the next generation is evaluated.
+      pending_poses_ = std::async(std::launch::async, [this, c = champion, r = robots.front(), gen,
+                                                       e = results[champ]] { return champion_trajectory(c, r, gen, e); });
+    } else {
+      poses = champion_trajectory(champion, robots.front(), gen, results[champ]);  // published[0] is the champion
+    }
+  }
   last_champion_hash_ = champion_hash;
-  timing.trajectory = seconds_since(tm);
+  timing.trajectory += seconds_since(tm);
 
   std::vector<double> fitness(results.size());
   for (size_t i = 0; i < results.size(); ++i) fitness[i] = results[i].fitness;
-  const bool last = gen + 1 >= config_.generations;
   tm = std::chrono::steady_clock::now();
   if (last) {
     finished_ = true;
@@ -264,10 +320,7 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   }
   timing.messages += seconds_since(tm);
   tm = std::chrono::steady_clock::now();
-  for (pose_t& p : poses) {
-    p.utime = now_us();
-    emit(kChannelPose, encode_message(p), p.utime);
-  }
+  emit_poses(poses);
   timing.trajectory += seconds_since(tm);
   if (bus_) {
     // How publishing went, on the bus only (the log is the record).
@@ -289,7 +342,15 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   report.summary = s;
   elapsed_ += seconds_since(t0);
   tm = std::chrono::steady_clock::now();
-  save_checkpoint();
+  // A generation whose poses are still to come is checkpointed once they are
+  // in the log (finish_trajectory, in the next step or wait_for_checkpoint);
+  // meanwhile the previous generation's is the last one whole.
+  if (pending_poses_.valid()) {
+    write_held_checkpoint();
+  } else {
+    held_checkpoint_.reset();
+    save_checkpoint();
+  }
   timing.checkpoint = seconds_since(tm);
   if (finished_) {
     tm = std::chrono::steady_clock::now();

@@ -3,6 +3,7 @@
 // displacement, every event written to the run's LCM log and, when live, to
 // the bus; a checkpoint after every generation.
 #include <functional>
+#include <future>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -32,6 +33,14 @@ struct EvolveOptions {
                                        ///< next generation is evaluated (robozoo-evolve --mpi: rank 0's
                                        ///< largest serial cost); a failed write is reported one
                                        ///< generation later, the last one before run() returns
+  bool overlap_trajectory = false;  ///< re-simulate a new champion for its pose stream on a thread
+                                    ///< while the next generation is evaluated (robozoo-evolve --mpi:
+                                    ///< rank 0 waits for the workers then); its poses, then its
+                                    ///< generation's checkpoint, are written once that evaluation
+                                    ///< returns. The log holds the same messages in the same order.
+                                    ///< Only with an evaluator that does not simulate in this
+                                    ///< process (Evaluator::simulates_in_process; else the
+                                    ///< constructor throws std::invalid_argument).
 };
 
 /// Where the evolution process's time went in one generation (s): the serial part
@@ -104,12 +113,23 @@ class Evolution {
   /// (thread-safe: for a signal watcher). With background_checkpoint the last
   /// generation's checkpoint may still be on its way.
   int checkpointed_generations() const { return checkpoint_writer_->generations_written(); }
-  /// Waits for a checkpoint being written in the background; rethrows its failure.
-  void wait_for_checkpoint() { checkpoint_writer_->wait(); }
+  /// Finishes what a generation left running (overlap_trajectory: its
+  /// champion's poses, then its checkpoint) and waits for a checkpoint being
+  /// written in the background; rethrows their failure.
+  void wait_for_checkpoint();
 
  private:
   void emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime);
   void save_checkpoint();
+  /// overlap_trajectory: writes the previous generation's poses once its
+  /// re-simulation ends, then that generation's checkpoint (s spent waiting and writing).
+  double finish_trajectory();
+  /// The log synced and the run's state as a checkpoint (not written).
+  Checkpoint make_checkpoint();
+  /// Writes the checkpoint finish_trajectory held back, if any.
+  void write_held_checkpoint();
+  /// Logs and publishes a trajectory's poses.
+  void emit_poses(std::vector<pose_t>& poses);
   int generations_done() const;  ///< finished generations: what a checkpoint now would hold
   /// Re-simulates a new champion (`robot`: grown from it once, for its
   /// morphology message too): its pose messages (utime 0, set when sent),
@@ -138,6 +158,9 @@ class Evolution {
   double elapsed_ = 0.0;
   bool finished_ = false;
   bool resumed_ = false;
+  std::future<std::vector<pose_t>> pending_poses_;  // overlap_trajectory: the last generation's, simulating
+  std::optional<Checkpoint> held_checkpoint_;        // the last generation's, once its poses were logged
+  int held_generations_ = 0;                         // finished generations it holds
 };
 
 }  // namespace robozoo

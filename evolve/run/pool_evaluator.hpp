@@ -19,6 +19,7 @@ class PoolEvaluator : public Evaluator {
   explicit PoolEvaluator(std::unique_ptr<Transport> transport, double job_timeout_s = 600.0);
   std::vector<EvalSummary> evaluate(const std::vector<Genome>& genomes) override;
   int parallelism() const override { return pool_->workers(); }
+  bool simulates_in_process() const override { return false; }  // forked workers or MPI ranks
   const PoolStats& stats() const { return pool_->stats(); }
   /// The worker processes' ids (tests kill one on purpose).
   std::vector<int> worker_pids();

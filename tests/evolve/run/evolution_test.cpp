@@ -4,10 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
+#include "evolve/io/event_log.hpp"
+#include "evolve/io/log_compare.hpp"
 #include "evolve/run/checkpoint.hpp"
 #include "evolve/run/evaluator.hpp"
+#include "evolve/run/pool_evaluator.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo {
@@ -57,6 +61,92 @@ TEST(Evolution, StepTimingsSplitTheGenerationAndTheFinalWaitIsApart) {
       EXPECT_GE(t.serial() + 1e-9, t.messages + t.trajectory + t.breeding + t.checkpoint) << "generation " << g;
       EXPECT_GT(t.evaluate, 0.0);
     }
+  }
+}
+
+
+/// A run in which new champions reach the simulator (so trajectories are logged).
+RunConfig run_with_trajectories() {
+  RunConfig c;
+  c.seed = 7;
+  c.neat.population = 24;
+  c.generations = 5;
+  c.eval.sim.steps = 400;
+  return c;
+}
+
+size_t poses(const LogContents& log) {
+  size_t n = 0;
+  for (const auto& r : log.records) n += r.channel == "ROBOZOO_POSE";
+  return n;
+}
+
+/// Runs `c` to its end (or `stop_after` steps, then wait_for_checkpoint) into `log`.
+void evolve(const RunConfig& c, const std::string& log, bool overlap, int stop_after = -1, bool resume = false) {
+  PoolEvaluator evaluator(2, c.eval);  // worker processes: rank 0 simulates only the trajectory
+  EvolveOptions o;
+  o.log_path = log;
+  o.background_checkpoint = overlap;
+  o.overlap_trajectory = overlap;
+  o.resume = resume;
+  Evolution evo(c, o, evaluator);
+  for (int g = 0; (stop_after < 0 || g < stop_after) && evo.step({}); ++g) {
+  }
+  evo.wait_for_checkpoint();
+}
+
+// robozoo-evolve --mpi re-simulates a new champion while the next generation is
+// evaluated; its poses and that generation's checkpoint come later, but the log
+// and the checkpoints are those of a run that does it within the generation.
+TEST(Evolution, OverlappedTrajectoryGivesTheSameLogAndCheckpoint) {
+  TempDir dir;
+  const RunConfig c = run_with_trajectories();
+  evolve(c, dir / "plain.lcmlog", false);
+  evolve(c, dir / "overlapped.lcmlog", true);
+  const LogContents plain = read_event_log(dir / "plain.lcmlog");
+  EXPECT_GT(poses(plain), 0u);  // trajectories were logged
+  EXPECT_EQ(first_log_difference(plain, read_event_log(dir / "overlapped.lcmlog")), "");
+  const Checkpoint a = read_checkpoint(dir / "plain.lcmlog.checkpoint");
+  const Checkpoint b = read_checkpoint(dir / "overlapped.lcmlog.checkpoint");
+  EXPECT_TRUE(b.finished);
+  EXPECT_EQ(a.log_bytes, b.log_bytes);
+  EXPECT_EQ(a.log_events, b.log_events);
+  EXPECT_EQ(a.rng_state, b.rng_state);
+  EXPECT_EQ(a.last_champion_hash, b.last_champion_hash);
+  EXPECT_EQ(a.evaluations, b.evaluations);
+}
+
+// Two simulations at once in one process would differ (ODE's random constraint
+// order is process-wide): the overlap is refused with an in-process evaluator.
+TEST(Evolution, OverlappedTrajectoryRefusesAnEvaluatorSimulatingInThisProcess) {
+  TempDir dir;
+  const RunConfig c = run_with_trajectories();
+  InProcessEvaluator evaluator(c.eval);
+  EvolveOptions o;
+  o.log_path = dir / "run.lcmlog";
+  o.overlap_trajectory = true;
+  EXPECT_THROW(Evolution(c, o, evaluator), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(dir / "run.lcmlog"));
+}
+
+// Stopped between generations (as a signal or a failure stops it), the
+// overlapped run finishes the pending poses and checkpoints every generation
+// done: the log ends where the checkpoint says, and resuming gives the whole run.
+TEST(Evolution, OverlappedRunStoppedMidwayCheckpointsAllItDidAndResumes) {
+  TempDir dir;
+  const RunConfig c = run_with_trajectories();
+  evolve(c, dir / "whole.lcmlog", false);
+  for (int stop_after = 1; stop_after < c.generations; ++stop_after) {
+    const std::string log = dir / ("stopped" + std::to_string(stop_after) + ".lcmlog");
+    evolve(c, log, true, stop_after);
+    const Checkpoint k = read_checkpoint(log + ".checkpoint");
+    EXPECT_EQ(k.population.generation, stop_after);
+    EXPECT_FALSE(k.finished);
+    EXPECT_EQ(k.log_bytes, static_cast<int64_t>(std::filesystem::file_size(log))) << "stopped after " << stop_after;
+    EXPECT_EQ(k.log_events, static_cast<int64_t>(read_event_log(log).records.size()));
+    evolve(c, log, true, -1, true);
+    EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "")
+        << "stopped after " << stop_after;
   }
 }
 
