@@ -268,7 +268,7 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
     } else {
       for (int g = 0; g < o.generations && evo.step(report); ++g) {
       }
-      evo.wait_for_checkpoint();
+      evo.settle();
     }
     resumed_at = evo.resumed() ? evo.start_generation() : -1;
     records = evaluator.records;

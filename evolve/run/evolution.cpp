@@ -171,9 +171,13 @@ void Evolution::write_held_checkpoint() {
 }
 
 void Evolution::wait_for_checkpoint() {
-  finish_trajectory();
   write_held_checkpoint();
   checkpoint_writer_->wait();
+}
+
+void Evolution::settle() {
+  finish_trajectory();
+  wait_for_checkpoint();
 }
 
 void Evolution::run(const std::function<void(const ProgressReport&)>& on_generation) {

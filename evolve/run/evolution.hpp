@@ -113,10 +113,15 @@ class Evolution {
   /// (thread-safe: for a signal watcher). With background_checkpoint the last
   /// generation's checkpoint may still be on its way.
   int checkpointed_generations() const { return checkpoint_writer_->generations_written(); }
-  /// Finishes what a generation left running (overlap_trajectory: its
-  /// champion's poses, then its checkpoint) and waits for a checkpoint being
-  /// written in the background; rethrows their failure.
+  /// Waits for a checkpoint being written in the background (first writing
+  /// one held back, if any); rethrows its failure. Quick, for a run that is
+  /// failing: a generation whose champion's poses are still being simulated
+  /// (overlap_trajectory) is left out of the checkpoint, and redone on resume.
   void wait_for_checkpoint();
+  /// For a run stopped between generations on purpose: finishes what the last
+  /// generation left running (its champion's poses, then its checkpoint), then
+  /// waits like wait_for_checkpoint.
+  void settle();
 
  private:
   void emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime);
