@@ -11,19 +11,13 @@
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
 #include "runlog/run_record.hpp"
+#include "tests/support/small_run.hpp"
 
 namespace robozoo::render::testing {
 
 /// The configuration of the small run: 4 generations of 24, 400 steps, seed 7
 /// (robots reach the simulator from generation 1 on).
-inline RunConfig small_config() {
-  RunConfig c;
-  c.seed = 7;
-  c.neat.population = 24;
-  c.generations = 4;
-  c.eval.sim.steps = 400;
-  return c;
-}
+inline RunConfig small_config() { return robozoo::testing::small_run_config(); }
 
 /// Writes the small run's log to `path` (about a second, in this process).
 inline void write_small_run(const std::string& path) {

@@ -12,20 +12,14 @@
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
+#include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo::testing {
 
 /// The configuration of the small run: 4 generations of 24 robots, 400 steps
 /// (still sends champions to the simulator, so the log holds trajectories).
-inline RunConfig small_run_config() {
-  RunConfig c;
-  c.seed = 7;
-  c.neat.population = 24;
-  c.generations = 4;
-  c.eval.sim.steps = 400;
-  return c;
-}
+using robozoo::testing::small_run_config;
 
 /// Path of the small run's log, written on first use by Evolution with an
 /// in-process evaluator (the same code robozoo-evolve runs).

@@ -12,6 +12,7 @@
 #include "evolve/run/checkpoint.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/pool_evaluator.hpp"
+#include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo {
@@ -19,14 +20,8 @@ namespace {
 
 using robozoo::testing::TempDir;
 
-RunConfig small_run() {
-  RunConfig c;
-  c.seed = 7;
-  c.neat.population = 16;
-  c.generations = 3;
-  c.eval.sim.steps = 300;
-  return c;
-}
+/// A run in which new champions reach the simulator (so trajectories are logged).
+RunConfig run_with_trajectories() { return robozoo::testing::small_run_config(5); }
 
 // Each generation's timings split its wall time: the parts are disjoint, so
 // the serial part holds them all; only the run's last generation waits for its
@@ -34,7 +29,7 @@ RunConfig small_run() {
 TEST(Evolution, StepTimingsSplitTheGenerationAndTheFinalWaitIsApart) {
   for (const bool background : {true, false}) {
     TempDir dir;
-    const RunConfig c = small_run();
+    const RunConfig c = run_with_trajectories();
     InProcessEvaluator evaluator(c.eval);
     EvolveOptions o;
     o.log_path = dir / "run.lcmlog";
@@ -65,24 +60,16 @@ TEST(Evolution, StepTimingsSplitTheGenerationAndTheFinalWaitIsApart) {
 }
 
 
-/// A run in which new champions reach the simulator (so trajectories are logged).
-RunConfig run_with_trajectories() {
-  RunConfig c;
-  c.seed = 7;
-  c.neat.population = 24;
-  c.generations = 5;
-  c.eval.sim.steps = 400;
-  return c;
-}
-
 size_t poses(const LogContents& log) {
   size_t n = 0;
   for (const auto& r : log.records) n += r.channel == "ROBOZOO_POSE";
   return n;
 }
 
-/// Runs `c` to its end (or `stop_after` steps, then wait_for_checkpoint) into `log`.
-void evolve(const RunConfig& c, const std::string& log, bool overlap, int stop_after = -1, bool resume = false) {
+/// Runs `c` to its end, or `stop_after` steps then settle() (or, `failing`,
+/// only wait_for_checkpoint()), into `log`.
+void evolve(const RunConfig& c, const std::string& log, bool overlap, int stop_after = -1, bool resume = false,
+            bool failing = false) {
   PoolEvaluator evaluator(2, c.eval);  // worker processes: rank 0 simulates only the trajectory
   EvolveOptions o;
   o.log_path = log;
@@ -92,7 +79,10 @@ void evolve(const RunConfig& c, const std::string& log, bool overlap, int stop_a
   Evolution evo(c, o, evaluator);
   for (int g = 0; (stop_after < 0 || g < stop_after) && evo.step({}); ++g) {
   }
-  evo.wait_for_checkpoint();
+  if (failing)
+    evo.wait_for_checkpoint();
+  else
+    evo.settle();
 }
 
 // robozoo-evolve --mpi re-simulates a new champion while the next generation is
@@ -148,6 +138,28 @@ TEST(Evolution, OverlappedRunStoppedMidwayCheckpointsAllItDidAndResumes) {
     EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "")
         << "stopped after " << stop_after;
   }
+}
+
+
+// A failing run does not wait for the champion still simulating: the
+// checkpoint holds the generations before it, and resuming redoes that one.
+TEST(Evolution, OverlappedRunFailingMidwayCheckpointsTheWholeGenerationsAndResumes) {
+  TempDir dir;
+  const RunConfig c = run_with_trajectories();
+  evolve(c, dir / "whole.lcmlog", false);
+  bool left_one_out = false;
+  for (int stop_after = 1; stop_after < c.generations; ++stop_after) {
+    const std::string log = dir / ("failed" + std::to_string(stop_after) + ".lcmlog");
+    evolve(c, log, true, stop_after, false, true);
+    const Checkpoint k = read_checkpoint(log + ".checkpoint");
+    EXPECT_GE(k.population.generation, stop_after - 1);
+    EXPECT_LE(k.population.generation, stop_after);
+    left_one_out |= k.population.generation == stop_after - 1;
+    evolve(c, log, true, -1, true);
+    EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "")
+        << "failed after " << stop_after;
+  }
+  EXPECT_TRUE(left_one_out);  // some stop found a champion still simulating
 }
 
 }  // namespace
