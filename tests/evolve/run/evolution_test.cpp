@@ -23,6 +23,14 @@ using robozoo::testing::TempDir;
 /// A run in which new champions reach the simulator (so trajectories are logged).
 RunConfig run_with_trajectories() { return robozoo::testing::small_run_config(5); }
 
+EvolveOptions options(const std::string& log, bool background_checkpoint, bool overlap_trajectory) {
+  EvolveOptions o;
+  o.log_path = log;
+  o.background_checkpoint = background_checkpoint;
+  o.overlap_trajectory = overlap_trajectory;
+  return o;
+}
+
 // Each generation's timings split its wall time: the parts are disjoint, so
 // the serial part holds them all; only the run's last generation waits for its
 // last (background) checkpoint, and that wait is not counted as serial.
@@ -31,10 +39,7 @@ TEST(Evolution, StepTimingsSplitTheGenerationAndTheFinalWaitIsApart) {
     TempDir dir;
     const RunConfig c = run_with_trajectories();
     InProcessEvaluator evaluator(c.eval);
-    EvolveOptions o;
-    o.log_path = dir / "run.lcmlog";
-    o.background_checkpoint = background;
-    Evolution evo(c, o, evaluator);
+    Evolution evo(c, options(dir / "run.lcmlog", background, false), evaluator);
     std::vector<ProgressReport> reports;
     evo.run([&](const ProgressReport& r) {
       reports.push_back(r);
@@ -71,10 +76,7 @@ size_t poses(const LogContents& log) {
 void evolve(const RunConfig& c, const std::string& log, bool overlap, int stop_after = -1, bool resume = false,
             bool failing = false) {
   PoolEvaluator evaluator(2, c.eval);  // worker processes: rank 0 simulates only the trajectory
-  EvolveOptions o;
-  o.log_path = log;
-  o.background_checkpoint = overlap;
-  o.overlap_trajectory = overlap;
+  EvolveOptions o = options(log, overlap, overlap);
   o.resume = resume;
   Evolution evo(c, o, evaluator);
   for (int g = 0; (stop_after < 0 || g < stop_after) && evo.step({}); ++g) {
@@ -112,10 +114,7 @@ TEST(Evolution, OverlappedTrajectoryRefusesAnEvaluatorSimulatingInThisProcess) {
   TempDir dir;
   const RunConfig c = run_with_trajectories();
   InProcessEvaluator evaluator(c.eval);
-  EvolveOptions o;
-  o.log_path = dir / "run.lcmlog";
-  o.overlap_trajectory = true;
-  EXPECT_THROW(Evolution(c, o, evaluator), std::invalid_argument);
+  EXPECT_THROW(Evolution(c, options(dir / "run.lcmlog", false, true), evaluator), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(dir / "run.lcmlog"));
 }
 
