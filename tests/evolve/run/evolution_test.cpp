@@ -12,6 +12,7 @@
 #include "evolve/run/checkpoint.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/pool_evaluator.hpp"
+#include "tests/support/evolve_runs.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
@@ -64,13 +65,6 @@ TEST(Evolution, StepTimingsSplitTheGenerationAndTheFinalWaitIsApart) {
   }
 }
 
-
-size_t poses(const LogContents& log) {
-  size_t n = 0;
-  for (const auto& r : log.records) n += r.channel == "ROBOZOO_POSE";
-  return n;
-}
-
 /// Runs `c` to its end, or `stop_after` steps then settle() (or, `failing`,
 /// only wait_for_checkpoint()), into `log`.
 void evolve(const RunConfig& c, const std::string& log, bool overlap, int stop_after = -1, bool resume = false,
@@ -96,7 +90,7 @@ TEST(Evolution, OverlappedTrajectoryGivesTheSameLogAndCheckpoint) {
   evolve(c, dir / "plain.lcmlog", false);
   evolve(c, dir / "overlapped.lcmlog", true);
   const LogContents plain = read_event_log(dir / "plain.lcmlog");
-  EXPECT_GT(poses(plain), 0u);  // trajectories were logged
+  EXPECT_GT(robozoo::testing::count_channel(plain, "ROBOZOO_POSE"), 0u);  // trajectories were logged
   EXPECT_EQ(first_log_difference(plain, read_event_log(dir / "overlapped.lcmlog")), "");
   const Checkpoint a = read_checkpoint(dir / "plain.lcmlog.checkpoint");
   const Checkpoint b = read_checkpoint(dir / "overlapped.lcmlog.checkpoint");
