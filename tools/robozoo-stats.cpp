@@ -1,23 +1,28 @@
 // robozoo-stats: the paper's figures from a folder of robozoo-evolve logs
 // (issue 7): Figure 1 (mean best-so-far fitness per generation, +-1 standard
 // error), Figure 2 (body plans of the best-of-run robots), Figure 3 (their
-// CPPNs), the champion-change analysis of section 4, Student's t-test for every
-// compared statistic, CSV tables, gnuplot PNGs, zoo sheets (robozoo-render) and
-// a Markdown report that puts each of the paper's claims beside robozoo's figure.
+// CPPNs), the champion-change analysis of section 4; for every compared
+// statistic Student's and Welch's t-tests, Cohen's d with its confidence
+// interval, Holm's correction over the secondary tests and the power at the
+// paper's effect; CSV tables, gnuplot PNGs, zoo sheets (robozoo-render) and a
+// Markdown report that puts each of the paper's claims beside robozoo's figure.
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 
 #include "evolve/analysis/stats_job.hpp"
 #include "evolve/core/version.hpp"
+#include "evolve/experiment/trial_plan.hpp"
 
 using namespace robozoo;
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "robozoo-stats: read every log (*.lcmlog) in DIR (e.g. a robozoo-experiment folder), compare the\n"
-      "feed-forward and recurrent regimes as the paper does (Figures 1-3, new champions of section 4, Student's\n"
-      "t-tests) and write CSV tables, gnuplot PNGs, zoo sheets and report.md into --out (default DIR/stats)."};
+      "robozoo-stats: read every log (*.lcmlog) in DIR (e.g. a robozoo-experiment folder), compare two arms\n"
+      "as the paper does (Figures 1-3, new champions of section 4): the primary test (best-so-far fitness at the\n"
+      "last generation, Student's t at --alpha), the secondary tests under Holm's correction, Welch's t, Cohen's d\n"
+      "with its 95 % CI and the power at the paper's effect; write CSV tables, gnuplot PNGs, zoo sheets and\n"
+      "report.md into --out (default DIR/stats)."};
   StatsOptions o;
   bool no_plots = false, no_zoo = false;
   app.add_option("DIR", o.log_dir, "folder of the runs' logs")->required();
@@ -38,12 +43,19 @@ int main(int argc, char** argv) {
   app.add_flag("--no-zoo", no_zoo, "do not make zoo sheets");
   app.add_option("--title", o.title, "title of the report");
   std::vector<std::string> compare = {"feedforward", "recurrent"};
+  std::vector<std::string> arms;
+  for (int a = 0; a < kNumArms; ++a) arms.push_back(arm_name(static_cast<Arm>(a)));
+  std::string arm_list;
+  for (const auto& a : arms) arm_list += (arm_list.empty() ? "" : ", ") + a;
   app.add_option("--compare", compare,
-                 "the two arms to compare, control first: feedforward, recurrent or recurrent-sparse "
-                 "(robozoo-experiment --arms); runs of other arms are listed and left out")
+                 "the two arms to compare, control first: " + arm_list +
+                     " (robozoo-experiment --arms); runs of other arms are listed and left out")
       ->delimiter(',')
       ->expected(2)
-      ->check(CLI::IsMember({"feedforward", "recurrent", "recurrent-sparse"}))
+      ->check(CLI::IsMember(arms))
+      ->capture_default_str();
+  app.add_option("--alpha", o.alpha, "significance level of the primary test and of Holm's family (the paper: 0.05)")
+      ->check(CLI::Range(1e-6, 0.5))
       ->capture_default_str();
   app.add_option("--note", o.notes, "a paragraph for the top of the report (repeatable)");
   app.set_version_flag("--version", robozoo::version_line());
@@ -60,8 +72,8 @@ int main(int argc, char** argv) {
   try {
     std::cerr << "robozoo-stats: reading " << o.log_dir << "\n";
     const StatsOutcome r = run_stats(o, std::cerr);
-    std::cerr << "robozoo-stats: " << r.analysis.control.size() << " feed-forward and " << r.analysis.experimental.size()
-              << " recurrent runs";
+    std::cerr << "robozoo-stats: " << r.analysis.control.size() << " " << arm_title(r.analysis.control_arm)
+              << " and " << r.analysis.experimental.size() << " " << arm_title(r.analysis.experimental_arm) << " runs";
     if (!r.skipped.empty()) std::cerr << ", " << r.skipped.size() << " left out (listed in the report)";
     std::cerr << "\n  wrote";
     for (const auto& f : r.files) std::cerr << " " << f;

@@ -1,20 +1,30 @@
 #include "evolve/analysis/experiment_analysis.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace robozoo {
 
 Comparison compare(const std::string& key, const std::string& label, const std::string& unit,
-                   const std::vector<double>& control, const std::vector<double>& experimental) {
+                   const std::vector<double>& control, const std::vector<double>& experimental, Samples samples) {
   Comparison c;
   c.key = key;
   c.label = label;
   c.unit = unit;
   c.control = describe(control);
   c.experimental = describe(experimental);
-  c.test = ttest_ind(control, experimental);
-  c.stars = significance_stars(c.test.p);
+  c.samples = samples;
+  if (samples == Samples::Runs) {
+    c.student = ttest_ind(experimental, control);
+    c.welch = welch_ttest(experimental, control);
+    c.effect = effect_size(experimental, control);
+  } else {
+    const double nan = std::nan("");
+    c.student = c.welch = {nan, nan, nan};
+    c.effect.d = c.effect.g = c.effect.d_low = c.effect.d_high = nan;
+  }
+  c.stars = significance_stars(c.student.p);
   return c;
 }
 
@@ -78,8 +88,10 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::
         if (g < r.best_so_far.size()) v.push_back(r.best_so_far[g]);
       return v;
     };
-    e.fitness_curve.push_back({static_cast<int32_t>(g), describe(at(e.control)), describe(at(e.experimental))});
+    const auto c = at(e.control), x = at(e.experimental);
+    e.fitness_curve.push_back({static_cast<int32_t>(g), describe(c), describe(x), ttest_ind(x, c)});
   }
+  e.last_generation = static_cast<int32_t>(longest) - 1;
 
   // A run with no logged generation has no fitness: it is left out of that sample.
   auto final_best = [](const std::vector<RunAnalysis>& side) {
@@ -90,6 +102,14 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::
   };
   e.fitness = {compare("best_fitness", "best-of-run fitness (best so far at the last logged generation)",
                        "fitness units", final_best(e.control), final_best(e.experimental))};
+  for (size_t i = 0; i < e.other.size();) {  // `other` is sorted by arm
+    size_t j = i;
+    std::vector<RunAnalysis> arm;
+    while (j < e.other.size() && e.other[j].arm == e.other[i].arm) arm.push_back(e.other[j++]);
+    e.other_arms.push_back({e.other[i].arm, compare("best_fitness", "best-of-run fitness", "fitness units",
+                                                    final_best(e.control), final_best(arm))});
+    i = j;
+  }
 
   const std::vector<Spec> morph = {
       {"spheres", "spheres", "count", [](const RunAnalysis& r) { return r.morphology.spheres; }},
@@ -131,13 +151,20 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::
   auto same = [](const ChampionChange& c) { return !c.topology_changed; };
   auto indicator = [](const ChampionChange& c) { return c.topology_changed ? 1.0 : 0.0; };
   auto gain = [](const ChampionChange& c) { return c.improvement; };
-  auto per_run_share = [](const std::vector<RunAnalysis>& side) {
+  // Per run: the mean of `value` over the run's new champions that `keep`
+  // selects; runs without any such champion have no value.
+  auto per_run = [](const std::vector<RunAnalysis>& side, const std::function<bool(const ChampionChange&)>& keep,
+                    const std::function<double(const ChampionChange&)>& value) {
     std::vector<double> v;
     for (const auto& r : side) {
-      if (r.changes.changes.empty()) continue;
-      double k = 0;
-      for (const auto& c : r.changes.changes) k += c.topology_changed;
-      v.push_back(k / static_cast<double>(r.changes.changes.size()));
+      double sum = 0;
+      int n = 0;
+      for (const auto& c : r.changes.changes)
+        if (keep(c)) {
+          sum += value(c);
+          ++n;
+        }
+      if (n > 0) v.push_back(sum / n);
     }
     return v;
   };
@@ -146,29 +173,52 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::
     for (const auto& r : side) v.push_back(static_cast<double>(r.changes.changes.size()));
     return v;
   };
+  const auto& C = e.control;
+  const auto& X = e.experimental;
   e.champion = {
+      compare("topology_changed_per_run", "share of a run's new champions whose topology differs from the previous "
+              "champion's (per run)", "share", per_run(C, all, indicator), per_run(X, all, indicator)),
+      compare("improvement_changed_per_run", "a run's mean fitness gain of its new champions with a different "
+              "topology (per run)", "fitness units", per_run(C, changed, gain), per_run(X, changed, gain)),
+      compare("improvement_same_per_run", "a run's mean fitness gain of its new champions with the same topology "
+              "(per run)", "fitness units", per_run(C, same, gain), per_run(X, same, gain)),
+      compare("new_champions_per_run", "new champions per run", "count", per_run_count(C), per_run_count(X)),
       compare("topology_changed", "new champions whose topology differs from the previous champion's (pooled)",
-              "share", pooled(e.control, all, indicator), pooled(e.experimental, all, indicator)),
-      compare("improvement_changed", "fitness improvement of a new champion with a different topology (pooled)",
-              "fitness units", pooled(e.control, changed, gain), pooled(e.experimental, changed, gain)),
-      compare("improvement_same", "fitness improvement of a new champion with the same topology (pooled)",
-              "fitness units", pooled(e.control, same, gain), pooled(e.experimental, same, gain)),
-      compare("improvement_all", "fitness improvement of any new champion (pooled)", "fitness units",
-              pooled(e.control, all, gain), pooled(e.experimental, all, gain)),
-      compare("topology_changed_per_run", "share of a run's new champions with a different topology (per run)",
-              "share", per_run_share(e.control), per_run_share(e.experimental)),
-      compare("new_champions_per_run", "new champions per run", "count", per_run_count(e.control),
-              per_run_count(e.experimental)),
+              "share", pooled(C, all, indicator), pooled(X, all, indicator), Samples::PooledEvents),
+      compare("improvement_changed", "fitness gain of a new champion with a different topology (pooled)",
+              "fitness units", pooled(C, changed, gain), pooled(X, changed, gain), Samples::PooledEvents),
+      compare("improvement_same", "fitness gain of a new champion with the same topology (pooled)",
+              "fitness units", pooled(C, same, gain), pooled(X, same, gain), Samples::PooledEvents),
+      compare("improvement_all", "fitness gain of any new champion (pooled)", "fitness units", pooled(C, all, gain),
+              pooled(X, all, gain), Samples::PooledEvents),
   };
   for (const auto& r : e.control) e.control_without_poses += r.has_best && !r.morphology.ground_known;
   for (const auto& r : e.experimental) e.experimental_without_poses += r.has_best && !r.morphology.ground_known;
+  auto at_cap = [](const RunAnalysis& r) {
+    return r.has_best && r.max_spheres > 0 && r.morphology.spheres >= r.max_spheres;
+  };
+  for (const auto& r : e.control) e.control_at_cap += at_cap(r);
+  for (const auto& r : e.experimental) e.experimental_at_cap += at_cap(r);
+  for (auto& c : e.morphology)
+    if (censored_by_sphere_cap(c.key)) {
+      c.control_at_cap = e.control_at_cap;
+      c.experimental_at_cap = e.experimental_at_cap;
+    }
   return e;
 }
 
 std::string arm_title(const std::string& arm) {
   if (arm == "feedforward") return "feed-forward";
   if (arm == "recurrent-sparse") return "recurrent (sparse start)";
+  if (arm == "recurrent-zero") return "recurrent (zero-weight start)";
   return arm;
+}
+
+bool censored_by_sphere_cap(const std::string& key) {
+  for (const char* k : {"spheres", "leaves", "joints", "distance_sensors", "touch_sensors", "proprio_sensors",
+                        "time_sensors", "max_depth", "ground_spheres"})
+    if (key == k) return true;
+  return false;
 }
 
 std::string arm_column(const std::string& arm) {

@@ -10,24 +10,47 @@ std::string regime_label(const RunAnalysis& r) { return r.arm; }
 
 CsvWriter fitness_curve_table(const ExperimentAnalysis& a) {
   const std::string c = arm_column(a.control_arm), e = arm_column(a.experimental_arm);
-  CsvWriter t({"generation", c + "_n", c + "_mean", c + "_se", e + "_n", e + "_mean", e + "_se"});
+  CsvWriter t({"generation", c + "_n", c + "_mean", c + "_se", e + "_n", e + "_mean", e + "_se", "student_t",
+               "student_df", "student_p"});
   for (const auto& p : a.fitness_curve)
     t.add_row({std::to_string(p.generation), std::to_string(p.control.n), csv_number(p.control.mean),
                csv_number(p.control.se), std::to_string(p.experimental.n), csv_number(p.experimental.mean),
-               csv_number(p.experimental.se)});
+               csv_number(p.experimental.se), csv_number(p.student.t), csv_number(p.student.df),
+               csv_number(p.student.p)});
   return t;
 }
 
 CsvWriter comparison_table(const std::vector<Comparison>& list, const std::string& control,
                            const std::string& experimental) {
   const std::string c = arm_column(control), e = arm_column(experimental);
-  CsvWriter t({"statistic", "label", "unit", c + "_n", c + "_mean", c + "_sd", c + "_se", e + "_n", e + "_mean",
-               e + "_sd", e + "_se", "t", "df", "p", "stars"});
+  CsvWriter t({"statistic", "label", "unit", "samples", c + "_n", c + "_mean", c + "_sd", c + "_se", e + "_n",
+               e + "_mean", e + "_sd", e + "_se", "student_t", "student_df", "student_p", "welch_t", "welch_df",
+               "welch_p", "cohens_d", "hedges_g", "d_ci95_low", "d_ci95_high", "stars", c + "_at_max_spheres",
+               e + "_at_max_spheres"});
   for (const auto& c : list)
-    t.add_row({c.key, c.label, c.unit, std::to_string(c.control.n), csv_number(c.control.mean),
-               csv_number(c.control.sd), csv_number(c.control.se), std::to_string(c.experimental.n),
-               csv_number(c.experimental.mean), csv_number(c.experimental.sd), csv_number(c.experimental.se),
-               csv_number(c.test.t), csv_number(c.test.df), csv_number(c.test.p), c.stars});
+    t.add_row({c.key, c.label, c.unit, c.samples == Samples::Runs ? "runs" : "pooled_events",
+               std::to_string(c.control.n), csv_number(c.control.mean), csv_number(c.control.sd),
+               csv_number(c.control.se), std::to_string(c.experimental.n), csv_number(c.experimental.mean),
+               csv_number(c.experimental.sd), csv_number(c.experimental.se), csv_number(c.student.t),
+               csv_number(c.student.df), csv_number(c.student.p), csv_number(c.welch.t), csv_number(c.welch.df),
+               csv_number(c.welch.p), csv_number(c.effect.d), csv_number(c.effect.g), csv_number(c.effect.d_low),
+               csv_number(c.effect.d_high), c.stars, c.control_at_cap < 0 ? "" : std::to_string(c.control_at_cap),
+               c.experimental_at_cap < 0 ? "" : std::to_string(c.experimental_at_cap)});
+  return t;
+}
+
+CsvWriter claims_table(const ClaimsAssessment& claims) {
+  CsvWriter t({"statistic", "section", "role", "paper", "paper_direction", "student_p", "holm_p", "paper_effect",
+               "power_at_paper_effect", "direction", "verdict"});
+  for (const auto& r : claims.rows) {
+    const char* role = r.role == ClaimRole::Primary          ? "primary"
+                       : r.role == ClaimRole::Secondary      ? "secondary"
+                       : r.role == ClaimRole::ByConstruction ? "by_construction"
+                                                             : "descriptive";
+    t.add_row({r.comparison.key, r.section, role, r.paper, r.paper_direction == 2 ? "" : std::to_string(r.paper_direction),
+               csv_number(r.comparison.student.p), csv_number(r.holm_p), csv_number(r.paper_effect),
+               csv_number(r.power), r.direction, r.verdict});
+  }
   return t;
 }
 

@@ -61,14 +61,26 @@ std::string gnuplot_quote(const std::string& s) {
 }
 
 std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std::string& png_path,
-                                 const std::string& title, const PlotStyle& style) {
+                                 const std::string& title, const PlotStyle& style, double alpha) {
   if (curve.empty()) throw std::invalid_argument("fitness_curve_script: no generation to plot");
+  // The marks sit a little below the lowest error band.
+  double low = INFINITY, high = -INFINITY;
+  bool any_mark = false;
+  for (const auto& p : curve) {
+    for (const SampleStats* x : {&p.control, &p.experimental})
+      if (x->n > 0) {
+        low = std::min(low, x->mean - x->se);
+        high = std::max(high, x->mean + x->se);
+      }
+    any_mark |= p.student.p < alpha;
+  }
+  const double mark_y = std::isfinite(low) ? low - 0.04 * std::max(high - low, 1e-9) : 0.0;
   std::ostringstream s;
   s << terminal(png_path, style);
-  s << "$curve << EOD\n# generation control_mean control_se experimental_mean experimental_se\n";
+  s << "$curve << EOD\n# generation control_mean control_se experimental_mean experimental_se student_p\n";
   for (const auto& p : curve)
     s << p.generation << ' ' << num(p.control.mean) << ' ' << num(p.control.se) << ' ' << num(p.experimental.mean)
-      << ' ' << num(p.experimental.se) << '\n';
+      << ' ' << num(p.experimental.se) << ' ' << num(p.student.p) << '\n';
   s << "EOD\n";
   s << "set title " << gnuplot_quote(title) << "\n"
     << "set xlabel \"generation\"\nset ylabel \"best-so-far fitness (r + d)\"\n"
@@ -80,7 +92,12 @@ std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std
     << "     $curve using 1:($2+$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title \"experimental: " << style.experimental_label << " CPPNs\", \\\n"
     << "     $curve using 1:($4-$5) with lines dt 3 lc rgb \"#d62728\" notitle, \\\n"
-    << "     $curve using 1:($4+$5) with lines dt 3 lc rgb \"#d62728\" notitle\n";
+    << "     $curve using 1:($4+$5) with lines dt 3 lc rgb \"#d62728\" notitle";
+  if (any_mark)
+    s << ", \\\n     $curve using 1:($6 < " << num(alpha) << " ? " << num(mark_y)
+      << " : NaN) with points pt 7 ps 0.6 lc rgb \"black\" title "
+      << gnuplot_quote("p < " + num(alpha) + " (Student's t per generation, uncorrected)");
+  s << "\n";
   s << "unset output\n";
   return s.str();
 }
@@ -116,7 +133,9 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
     // About 7 pixels per character of the panel titles' font.
     t = wrap(t, static_cast<size_t>(std::max(20, style.width / columns / 8)));
     t += "\nn = " + std::to_string(c.control.n) + " / " + std::to_string(c.experimental.n);
-    if (!std::isnan(c.test.p)) t += c.test.p < 1e-4 ? ", p < 0.0001" : ", p = " + num(std::round(c.test.p * 1e4) / 1e4);
+    if (!std::isnan(c.student.p))
+      t += c.student.p < 1e-4 ? ", p < 0.0001" : ", p = " + num(std::round(c.student.p * 1e4) / 1e4);
+    if (c.samples == Samples::PooledEvents) t += " (pooled, descriptive)";
     if (!c.stars.empty()) t += "  " + c.stars;
     const bool nonneg = (c.control.n == 0 || c.control.mean - c.control.se >= 0) &&
                         (c.experimental.n == 0 || c.experimental.mean - c.experimental.se >= 0);

@@ -20,9 +20,10 @@ struct PlotStyle {
 };
 
 /// Figure 1: mean best-so-far fitness per generation of each regime, with +-1
-/// standard error as dotted lines around a shaded band.
+/// standard error as dotted lines around a shaded band; the generations whose
+/// Student's t-test gives p < alpha are marked by dots below the curves.
 std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std::string& png_path,
-                                 const std::string& title, const PlotStyle& style = {});
+                                 const std::string& title, const PlotStyle& style = {}, double alpha = 0.05);
 
 /// One bar panel per comparison (mean +- 1 standard error of each regime),
 /// the paper's asterisks in the panel's title; `scale` multiplies the values of

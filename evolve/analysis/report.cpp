@@ -5,7 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "evolve/analysis/paper_claims.hpp"
+#include "evolve/analysis/claim_verdicts.hpp"
+#include "evolve/analysis/holm.hpp"
 
 namespace robozoo {
 
@@ -26,42 +27,137 @@ int digits_for(double v) {
   return std::min(6, 2 + static_cast<int>(std::ceil(-std::log10(a))));
 }
 
-const std::vector<Comparison>& group_list(const ExperimentAnalysis& a, ClaimGroup g) {
-  switch (g) {
-    case ClaimGroup::Fitness: return a.fitness;
-    case ClaimGroup::Morphology: return a.morphology;
-    case ClaimGroup::Genotype: return a.genotype;
-    case ClaimGroup::Champion: return a.champion;
-  }
-  return a.fitness;
+std::string t_cell(const TTestResult& r) {
+  if (std::isnan(r.t)) return "—";
+  const std::string t = std::isfinite(r.t) ? fmt(r.t, 2) : (r.t > 0 ? "inf" : "-inf");
+  const std::string df = std::isnan(r.df)                                 ? "n/a"
+                         : std::fabs(r.df - std::round(r.df)) < 1e-9 ? fmt(r.df, 0)
+                                                                     : fmt(r.df, 1);
+  return t + ", " + df + ", " + format_p(r.p);
 }
 
-// Whether robozoo's comparison goes the paper's way. Only a significant
-// difference (p < 0.05) can agree or disagree; anything else cannot decide.
-std::string agreement(const PaperClaim& claim, const Comparison& c) {
-  if (claim.direction == 2) return "—";
-  if (c.control.n < 2 || c.experimental.n < 2 || std::isnan(c.test.p)) return "too few data";
-  if (!(c.test.p < 0.05)) return "inconclusive (p ≥ 0.05)";
-  const double diff = c.experimental.mean - c.control.mean;
-  if (claim.direction == 0) return "no: robozoo finds a significant difference";
-  if (diff == 0) return "no: no difference";
-  const bool same_way = claim.direction > 0 ? diff > 0 : diff < 0;
-  if (!same_way) return "no: significant, the other way";
-  return claim.significant ? "yes, significant" : "yes, significant (the paper: not significant)";
+std::string d_cell(const EffectSize& e) {
+  if (std::isnan(e.d)) return "—";
+  std::string s = fmt(e.d, 2);
+  if (std::isfinite(e.d_low)) s += " [" + fmt(e.d_low, 2) + ", " + fmt(e.d_high, 2) + "]";
+  return s;
+}
+
+std::string value_cell(const SampleStats& s, const std::string& unit) {
+  const double k = unit == "share" ? 100.0 : 1.0;
+  return format_mean_se(s, k) + (unit == "share" ? " %" : "") + " (" + std::to_string(s.n) + ")";
+}
+
+// "censored: 10 of 10 feed-forward and 7 of 10 recurrent best-of-run robots at max_spheres (50)".
+std::string censor_note(const Comparison& c, const ExperimentAnalysis& a) {
+  if (c.control_at_cap < 0) return "";
+  int32_t cap = 0;
+  for (const auto* side : {&a.control, &a.experimental})
+    for (const auto& r : *side) cap = std::max(cap, r.max_spheres);
+  return "censored: " + std::to_string(c.control_at_cap) + " of " + std::to_string(c.control.n) + " " +
+         arm_title(a.control_arm) + " and " + std::to_string(c.experimental_at_cap) + " of " +
+         std::to_string(c.experimental.n) + " " + arm_title(a.experimental_arm) +
+         " best-of-run robots at max_spheres" + (cap > 0 ? " (" + std::to_string(cap) + ")" : std::string());
+}
+
+std::string label_cell(const Comparison& c, const ExperimentAnalysis& a) {
+  const std::string note = censor_note(c, a);
+  return note.empty() ? c.label : c.label + " (" + note + ")";
 }
 
 void comparison_table(std::ostringstream& s, const std::vector<Comparison>& list, const ExperimentAnalysis& a) {
   s << "| statistic | unit | " << arm_title(a.control_arm) << " (mean ± s.e., n) | " << arm_title(a.experimental_arm)
-    << " (mean ± s.e., n) | t | p |  |\n"
-    << "|---|---|---|---|---|---|---|\n";
+    << " (mean ± s.e., n) | Student's t, df, p | Welch's t, df, p | Cohen's d [95 % CI] |  |\n"
+    << "|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : list) {
-    const double k = c.unit == "share" ? 100.0 : 1.0;
-    s << "| " << c.label << " | " << (c.unit == "share" ? "%" : c.unit) << " | " << format_mean_se(c.control, k)
-      << " (" << c.control.n << ") | " << format_mean_se(c.experimental, k) << " (" << c.experimental.n << ") | "
-      << (std::isfinite(c.test.t) ? fmt(c.test.t, 2) : std::string(std::isnan(c.test.t) ? "n/a" : "inf")) << " | "
-      << format_p(c.test.p) << " | " << c.stars << " |\n";
+    s << "| " << label_cell(c, a) << " | " << (c.unit == "share" ? "%" : c.unit) << " | "
+      << value_cell(c.control, c.unit) << " | " << value_cell(c.experimental, c.unit) << " | ";
+    if (c.samples == Samples::PooledEvents)
+      s << "— | — | — | pooled events: descriptive |\n";
+    else
+      s << t_cell(c.student) << " | " << t_cell(c.welch) << " | " << d_cell(c.effect) << " | " << c.stars << " |\n";
   }
   s << "\n";
+}
+
+std::string power_cell(const ClaimRow& r) {
+  if (std::isnan(r.power)) return "none";
+  // The paper's effect with its sign in this comparison's direction (no '|' inside a table cell).
+  return fmt(r.power, 2) + " (at d = " + fmt(r.paper_direction * r.paper_effect, 2) + ")";
+}
+
+void claims_table(std::ostringstream& s, const ClaimsAssessment& claims, const ExperimentAnalysis& a) {
+  const std::string ctl = arm_title(a.control_arm), exp = arm_title(a.experimental_arm);
+  if (claims.paper_compared) {
+    s << "| statistic | the paper (recurrent vs feed-forward) | " << ctl << " (mean ± s.e., n) | " << exp
+      << " (mean ± s.e., n) | Cohen's d [95 % CI] | Student's p | Holm's p | power at the paper's effect | "
+         "direction | verdict |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|\n";
+  } else {
+    s << "| statistic | " << ctl << " (mean ± s.e., n) | " << exp
+      << " (mean ± s.e., n) | Cohen's d [95 % CI] | Student's p | Holm's p | verdict |\n"
+      << "|---|---|---|---|---|---|---|\n";
+  }
+  for (const auto& r : claims.rows) {
+    if (r.role == ClaimRole::Descriptive) continue;
+    const Comparison& c = r.comparison;
+    const std::string label = (r.role == ClaimRole::Primary ? "**primary:** " : "") + label_cell(c, a);
+    const std::string holm = r.role == ClaimRole::Secondary ? format_p(r.holm_p) : "—";
+    s << "| " << label << " | ";
+    if (claims.paper_compared) s << r.paper << " | ";
+    s << value_cell(c.control, c.unit) << " | " << value_cell(c.experimental, c.unit) << " | " << d_cell(c.effect)
+      << " | " << format_p(c.student.p) << " | " << holm << " | ";
+    if (claims.paper_compared) s << power_cell(r) << " | " << (r.direction.empty() ? "—" : r.direction) << " | ";
+    s << r.verdict << " |\n";
+  }
+  s << "\n";
+}
+
+// Each other arm's best-of-run fitness against the control: a family of its own under Holm.
+void other_arms_table(std::ostringstream& s, const ExperimentAnalysis& a, double alpha) {
+  if (a.other_arms.empty() || a.control.empty()) return;
+  std::vector<double> p;
+  for (const auto& o : a.other_arms) p.push_back(o.fitness.student.p);
+  const std::vector<double> q = holm_adjust(p);
+  s << "### Other arms against the control\n\n"
+    << "Best-so-far fitness at the last generation of every other arm in the folder against " << arm_title(a.control_arm)
+    << ": secondary tests, one family under Holm's correction at α = " << fmt(alpha, 2)
+    << " (not the primary test; `--compare` makes a full report of any pair).\n\n"
+    << "| arm | " << arm_title(a.control_arm)
+    << " (mean ± s.e., n) | arm (mean ± s.e., n) | Student's t, df, p | Welch's t, df, p | Cohen's d [95 % CI] | "
+       "Holm's p | the paper |\n|---|---|---|---|---|---|---|---|\n";
+  for (size_t i = 0; i < a.other_arms.size(); ++i) {
+    const Comparison& c = a.other_arms[i].fitness;
+    const int orient = paper_orientation(a.control_arm, a.other_arms[i].arm);
+    std::string paper = "not compared by the paper";
+    if (orient != 0) {
+      paper = "recurrent fitter";
+      if (std::isfinite(c.effect.d) && c.effect.d != 0 && !std::isnan(q[i]))
+        paper += std::string("; here the ") + ((c.effect.d > 0) == (orient > 0) ? "same" : "other") + " way, " +
+                 (q[i] < alpha ? "significant" : "not significant") + " after Holm";
+    }
+    s << "| " << arm_title(a.other_arms[i].arm) << " | " << value_cell(c.control, c.unit) << " | "
+      << value_cell(c.experimental, c.unit) << " | " << t_cell(c.student) << " | " << t_cell(c.welch) << " | "
+      << d_cell(c.effect) << " | " << format_p(q[i]) << " | " << paper << " |\n";
+  }
+  s << "\n";
+}
+
+std::string generation_list(const std::vector<CurvePoint>& curve, double alpha) {
+  std::vector<int32_t> g;
+  for (const auto& p : curve)
+    if (p.student.p < alpha) g.push_back(p.generation);
+  if (g.empty()) return "none";
+  // Runs of consecutive generations as ranges: "3-7, 9".
+  std::string out;
+  for (size_t i = 0; i < g.size();) {
+    size_t j = i;
+    while (j + 1 < g.size() && g[j + 1] == g[j] + 1) ++j;
+    if (!out.empty()) out += ", ";
+    out += std::to_string(g[i]) + (j > i ? "-" + std::to_string(g[j]) : "");
+    i = j + 1;
+  }
+  return out;
 }
 
 }  // namespace
@@ -81,35 +177,51 @@ std::string format_p(double p) {
 
 std::string markdown_report(const ReportInputs& in) {
   const ExperimentAnalysis& a = in.analysis;
+  const ClaimsAssessment claims = assess_claims(a, in.alpha);
+  const std::string ctl = arm_title(a.control_arm), exp = arm_title(a.experimental_arm);
   std::ostringstream s;
   s << "# " << in.title << "\n\n";
+  s << claims.headline << "\n\n";
   if (!in.source.empty()) s << "Logs: `" << in.source << "`.\n\n";
   for (const auto& p : in.preamble) s << p << "\n\n";
-  s << "Control: " << arm_title(a.control_arm) << " CPPNs, " << a.control.size() << " runs; experimental: "
-    << arm_title(a.experimental_arm) << " CPPNs, " << a.experimental.size() << " runs. Every p-value is Student's two-sample t-test with equal variances "
-    << "(SciPy's `ttest_ind`, as in the paper; t distribution from Boost.Math): * p < 0.05, ** p < 0.01, "
-    << "*** p < 0.001.\n\n";
 
-  s << "## The paper's claims beside robozoo's figures\n\n"
-    << "| statistic | paper (Auerbach & Bongard) | robozoo " << arm_title(a.control_arm) << " | robozoo "
-    << arm_title(a.experimental_arm) << " | p | robozoo agrees |\n"
-    << "|---|---|---|---|---|---|\n";
-  for (const auto& claim : paper_claims()) {
-    const Comparison* c = find_comparison(group_list(a, claim.group), claim.key);
-    if (!c) continue;
-    const double k = c->unit == "share" ? 100.0 : 1.0;
-    const std::string unit = c->unit == "share" ? " %" : "";
-    s << "| " << c->label << " | " << claim.paper << " | " << format_mean_se(c->control, k) << unit << " | "
-      << format_mean_se(c->experimental, k) << unit << " | " << format_p(c->test.p) << " " << c->stars << " | "
-      << agreement(claim, *c) << " |\n";
-  }
-  s << "\n";
+  s << "## The tests, fixed before the data\n\n"
+    << "- **Primary test**: best-so-far fitness at the last generation, " << ctl << " (control) against " << exp
+    << " (experimental), Student's two-sample t-test at α = " << fmt(in.alpha, 2)
+    << ", as the paper (SciPy's `ttest_ind`, its footnote 4). Welch's t-test (unequal variances) is shown beside "
+       "every Student's test.\n"
+    << "- **Secondary tests**: the other " << claims.family_size
+    << " statistics whose samples are runs, one family under Holm's correction (family-wise error at most α); "
+       "their verdicts come from Holm's adjusted p. Not in the family: statistics true by construction for these "
+       "arms (labelled), pooled champion events (descriptive: the events of a run are not independent) and the "
+       "share of robots at max_spheres.\n"
+    << "- Every t and d is " << exp << " minus " << ctl << " (positive: " << exp
+    << " higher). Effect size: Cohen's d (the pooled s.d. of Student's test) with a 95 % confidence interval from "
+       "inverting the noncentral t (exact under normality and equal variances); Hedges' g is in the CSV files.\n";
+  if (claims.paper_compared)
+    s << "- Power: of Student's test at α = " << fmt(in.alpha, 2)
+      << " (unadjusted) with these runs, at the smallest |d| the paper's reported p implies with its 30 runs per "
+         "regime (p < 0.001: |d| ≥ 0.90; \"significant\", p < 0.05: |d| ≥ 0.52); none where the paper reports no "
+         "test or its samples are pooled events.\n";
+  s << "- Counts bounded by the number of spheres are censored when a best-of-run robot reached "
+       "growth.max_spheres; each says how many did.\n"
+    << "- In the figures' tables, stars mark Student's unadjusted p as the paper's figures do (* < 0.05, "
+       "** < 0.01, *** < 0.001); the verdicts use Holm's p.\n\n";
+
+  s << "## The paper's claims beside robozoo's figures\n\n";
+  if (!claims.paper_compared)
+    s << "The paper compared feed-forward with recurrent CPPNs only; it says nothing about " << ctl << " against "
+      << exp << ", so nothing here agrees or disagrees with it.\n\n";
+  claims_table(s, claims, a);
 
   s << "## Figure 1: fitness\n\n";
   if (!in.fitness_png.empty()) s << "![Figure 1](" << in.fitness_png << ")\n\n";
-  s << "Mean best-so-far fitness over the runs of each regime; dotted lines and shading: ± one standard error "
-       "(`fitness_curve.csv`).\n\n";
+  s << "Mean best-so-far fitness over the runs of each arm; dotted lines and shading: ± one standard error "
+       "(`fitness_curve.csv`). Marked at the foot: generations where Student's t-test of that generation gives "
+       "p < " << fmt(in.alpha, 2) << " (uncorrected, descriptive; the primary test is the last generation's): "
+    << generation_list(a.fitness_curve, in.alpha) << ".\n\n";
   comparison_table(s, a.fitness, a);
+  other_arms_table(s, a, in.alpha);
 
   s << "## Figure 2: body plans of the best-of-run robots\n\n";
   if (!in.morphology_png.empty()) s << "![Figure 2](" << in.morphology_png << ")\n\n";
@@ -126,6 +238,10 @@ std::string markdown_report(const ReportInputs& in) {
   s << "## Section 4: new champions\n\n";
   if (!in.champion_png.empty()) s << "![New champions](" << in.champion_png << ")\n\n";
   comparison_table(s, a.champion, a);
+  s << "The per-run rows are tested: each run's share of new champions with a different topology, and its mean "
+       "gain of each kind, is one sample (runs without such a new champion have none). The pooled rows put every new "
+       "champion of every run of an arm together, as the paper's figures do; a run's events are not independent, "
+       "so they are described, not tested.\n\n";
 
   s << "## Outcomes and reach\n\n";
   for (const auto& png : in.outcome_pngs) s << "![outcome shares](" << png << ")\n\n";
@@ -136,7 +252,7 @@ std::string markdown_report(const ReportInputs& in) {
     for (const auto& r : side) d = std::max(d, r.max_d);
     return d;
   };
-  s << "Largest d (displacement towards the target) any logged robot reached: " << fmt(max_d(a.control), 3)
+  s << "Largest displacement towards the target (the fitness term d) any logged robot reached: " << fmt(max_d(a.control), 3)
     << " m (" << arm_title(a.control_arm) << "), " << fmt(max_d(a.experimental), 3) << " m ("
     << arm_title(a.experimental_arm) << ")";
   if (in.target_distance > 0)

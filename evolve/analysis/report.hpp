@@ -28,6 +28,7 @@ struct ReportInputs {
   std::vector<ZooSheet> zoo;              ///< Figure 4
   std::vector<std::string> notes;         ///< skipped logs, decisions, anything a reader must know
   std::vector<std::string> commands;      ///< how to reproduce (shell lines)
+  double alpha = 0.05;                    ///< significance level of every test
 };
 
 /// The report as Markdown.

@@ -13,6 +13,7 @@
 #include "evolve/analysis/gnuplot_runner.hpp"
 #include "evolve/analysis/plot_scripts.hpp"
 #include "evolve/analysis/report.hpp"
+#include "evolve/analysis/reproduce_commands.hpp"
 #include "evolve/analysis/run_program.hpp"
 #include "evolve/experiment/program_path.hpp"
 #include "evolve/experiment/progress_estimate.hpp"
@@ -139,9 +140,11 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   outcome_shares_table(A).write(file("outcome_shares.csv"));
   champion_change_table(A).write(file("champion_change_events.csv"));
   runs_table(A).write(file("runs.csv"));
+  claims_table(assess_claims(A, o.alpha)).write(file("claims.csv"));
 
   ReportInputs rep;
   rep.title = o.title;
+  rep.alpha = o.alpha;
   rep.source = o.log_dir;
   rep.preamble = o.notes;
   {
@@ -158,8 +161,9 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   }
   if (sizes.size() > 1) rep.notes.push_back("The runs do not all have the same sizes: compare with care.");
   if (!A.other.empty())
-    rep.notes.push_back(std::to_string(A.other.size()) + " runs of other arms are in the folder and not compared "
-                        "here (robozoo-stats --compare chooses the two arms).");
+    rep.notes.push_back(std::to_string(A.other.size()) + " runs of other arms are in the folder: only their "
+                        "fitness is compared, against the control, under Figure 1 (robozoo-stats --compare chooses "
+                        "the two arms of the full comparison).");
   for (const auto* side : {&A.control, &A.experimental})
     if (!side->empty() && side->front().target_distance > 0) rep.target_distance = side->front().target_distance;
   for (const auto& s : out.skipped) rep.notes.push_back("Left out: " + s);
@@ -180,7 +184,8 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
                                                          : ", every fitness gain counted") +
                       ". Topology: the sphere tree as a rooted unordered tree (sorted nested parentheses)" +
                       (o.analysis.changes.topology.joints ? ", hinge joints included" : ", joints not included") +
-                      ". Pooled statistics treat every new champion of every run of a regime as one sample.");
+                      ". Pooled statistics put every new champion of every run of an arm together (described, not "
+                      "tested); the tested champion statistics take one value per run.");
 
   if (o.plots) {
     if (!gnuplot_available(o.gnuplot))
@@ -202,7 +207,7 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     wide.height = 1050;
     rep.fitness_png = plot("fig1_fitness", fitness_curve_script(A.fitness_curve, "fig1_fitness.png",
                                                                 "Figure 1: mean best-so-far fitness, ± 1 s.e.",
-                                                                labels));
+                                                                labels, o.alpha));
     rep.morphology_png = plot("fig2_morphology",
                               comparison_panels_script(A.morphology, "fig2_morphology.png",
                                                        "Figure 2: best-of-run robots (mean ± 1 s.e.; white " +
@@ -270,23 +275,16 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     rep.zoo.push_back(z);
   }
 
-  if (!sizes.empty()) {
-    const auto& [pop, gens, steps] = *sizes.begin();
-    const size_t trials = std::max(A.control.size(), A.experimental.size());
-    rep.commands.push_back("# this experiment");
-    rep.commands.push_back("build/bin/robozoo-experiment --trials " + std::to_string(trials) + " --generations " +
-                           std::to_string(gens) + " --population " + std::to_string(pop) +
-                           (steps != 2500 ? " --steps " + std::to_string(steps) : std::string()) +
-                           (A.control_arm != "feedforward" || A.experimental_arm != "recurrent"
-                                ? " --arms " + A.control_arm + "," + A.experimental_arm
-                                : std::string()) +
-                           " --out " + o.log_dir);
-    rep.commands.push_back("build/bin/robozoo-stats " + o.log_dir);
-    rep.commands.push_back("# the paper's full size (30 trials per regime, population 150, 500 generations), on a "
-                           "bigger machine");
-    rep.commands.push_back("build/bin/robozoo-experiment --trials 30 --generations 500 --population 150 --workers "
-                           "$(nproc) --out runs/paper");
-    rep.commands.push_back("build/bin/robozoo-stats runs/paper");
+  {
+    std::string stats = "build/bin/robozoo-stats " + o.log_dir + " --compare " + A.control_arm + "," +
+                        A.experimental_arm;
+    if (o.include_unfinished) stats += " --include-unfinished";
+    if (o.analysis.morphology.ground_epsilon != AnalysisParams{}.morphology.ground_epsilon)
+      stats += " --ground-epsilon " + csv_number(o.analysis.morphology.ground_epsilon);
+    if (o.analysis.changes.topology.joints) stats += " --topology-joints";
+    if (!o.analysis.changes.simulated_only) stats += " --all-champion-changes";
+    if (o.alpha != 0.05) stats += " --alpha " + csv_number(o.alpha);
+    rep.commands = reproduce_commands(A, o.log_dir, stats);
   }
   rep.analysis = A;
   write_text(file("report.md"), markdown_report(rep));

@@ -25,6 +25,7 @@ struct StatsOptions {
   std::string control_arm = "feedforward";     ///< the arm compared as the control
   std::string experimental_arm = "recurrent";  ///< the arm compared as the experimental regime
   std::vector<std::string> notes;    ///< paragraphs for the top of the report
+  double alpha = 0.05;               ///< significance level of every test (the paper's)
 };
 
 struct StatsOutcome {

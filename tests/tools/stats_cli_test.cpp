@@ -85,14 +85,26 @@ TEST(StatsCli, HandMadeLogsGiveTheStatisticsWorkedOutByHand) {
   EXPECT_DOUBLE_EQ(num(geno.at("links").at("recurrent_mean")), 2.5);
 
   const auto champ = read_csv(out + "/champion_changes.csv");
-  const auto& share = champ.at("topology_changed");
-  EXPECT_DOUBLE_EQ(num(share.at("feedforward_mean")), 0.5);
-  EXPECT_DOUBLE_EQ(num(share.at("recurrent_mean")), 0.75);
-  EXPECT_EQ(share.at("df"), "4");
-  // The p-value column is the t-test of the pooled indicators {0, 1} and {1, 1, 1, 0}.
-  EXPECT_NEAR(num(share.at("p")), ttest_ind({0, 1}, {1, 1, 1, 0}).p, 1e-9);
+  // Pooled events: described ({0, 1} and {1, 1, 1, 0}), not tested.
+  const auto& pooled = champ.at("topology_changed");
+  EXPECT_EQ(pooled.at("samples"), "pooled_events");
+  EXPECT_DOUBLE_EQ(num(pooled.at("feedforward_mean")), 0.5);
+  EXPECT_DOUBLE_EQ(num(pooled.at("recurrent_mean")), 0.75);
+  EXPECT_EQ(pooled.at("student_p"), "nan");
   EXPECT_NEAR(num(champ.at("improvement_changed").at("recurrent_mean")), 3.5 / 3.0, 1e-9);
-  EXPECT_EQ(champ.at("improvement_same").at("p"), "nan");
+  // Per run, tested: each run's share, feed-forward {0, 1}, recurrent {1, 0.5}.
+  const auto& share = champ.at("topology_changed_per_run");
+  EXPECT_EQ(share.at("samples"), "runs");
+  EXPECT_EQ(share.at("student_df"), "2");
+  EXPECT_NEAR(num(share.at("student_p")), ttest_ind({1, 0.5}, {0, 1}).p, 1e-9);
+  EXPECT_NEAR(num(share.at("welch_p")), welch_ttest({1, 0.5}, {0, 1}).p, 1e-9);
+  EXPECT_EQ(champ.at("improvement_same_per_run").at("student_p"), "nan");  // one run each
+
+  const auto claims = read_csv(out + "/claims.csv");
+  EXPECT_EQ(claims.at("best_fitness").at("role"), "primary");
+  EXPECT_EQ(claims.at("recurrent_links").at("role"), "by_construction");
+  EXPECT_EQ(claims.at("topology_changed").at("role"), "descriptive");
+  EXPECT_EQ(claims.at("joints").at("role"), "secondary");
 
   const auto runs = read_csv(out + "/runs.csv");
   ASSERT_EQ(runs.size(), 4u);
@@ -106,11 +118,21 @@ TEST(StatsCli, HandMadeLogsGiveTheStatisticsWorkedOutByHand) {
   }
   const std::string report = read_file(out + "/report.md");
   EXPECT_NE(report.find("96.99 % (recurrent) vs 59.92 % (feed-forward)"), std::string::npos);
-  EXPECT_NE(report.find("| 50.00 ± 50.00 % | 75.00 ± 25.00 % |"), std::string::npos) << report;
+  EXPECT_NE(report.find("| 50.00 ± 50.00 % (2) | 75.00 ± 25.00 % (2) |"), std::string::npos) << report;
+  EXPECT_EQ(report.rfind("# robozoo: recurrent vs feed-forward CPPNs\n\nThe paper's fitness result (recurrent CPPNs "
+                         "fitter) is **inconclusive** at generation 2 (the last) with 2 feed-forward and 2 recurrent "
+                         "runs", 0),
+            0u)
+      << report;
   EXPECT_NE(report.find("robozoo-render is missing (looked for /nonexistent/robozoo-render)"), std::string::npos);
   EXPECT_NE(report.find("![Figure 2](fig2_morphology.png)"), std::string::npos);
   EXPECT_NE(report.find("1 feed-forward, 0 recurrent"), std::string::npos);  // best-of-run without poses
-  EXPECT_NE(report.find("robozoo-experiment --trials 2 --generations 3 --population 10 --out"), std::string::npos);
+  // The hand-made seeds (1 and 2 in both arms) are not robozoo-experiment's: one robozoo-evolve per run.
+  EXPECT_NE(report.find("--regime feedforward --seed 2 --population 10 --generations 3 --run-id feedforward-s2"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("build/bin/robozoo-stats " + dir.path + " --compare feedforward,recurrent\n"),
+            std::string::npos);
 }
 
 TEST(StatsCli, CallsRobozooRenderForEachRegimesZooSheet) {

@@ -16,8 +16,10 @@ using namespace robozoo::testing;
 
 std::vector<CurvePoint> curve() {
   std::vector<CurvePoint> c;
-  for (int g = 0; g < 5; ++g)
-    c.push_back({g, describe({10.0 + g, 12.0 + g}), describe({11.0 + 2 * g, 13.0 + 2 * g, 12.0 + 2 * g})});
+  for (int g = 0; g < 5; ++g) {
+    const std::vector<double> a = {10.0 + g, 12.0 + g}, b = {11.0 + 2 * g, 13.0 + 2 * g, 12.0 + 2 * g};
+    c.push_back({g, describe(a), describe(b), ttest_ind(b, a)});
+  }
   return c;
 }
 
@@ -35,6 +37,15 @@ TEST(PlotScripts, FitnessCurveHoldsItsDataAndRendersAPng) {
   EXPECT_NE(s.find("set terminal pngcairo"), std::string::npos);
   EXPECT_NE(s.find("set output \"fig1.png\""), std::string::npos);
   EXPECT_NE(s.find("4 15 1 20 0.5773502692"), std::string::npos);  // generation 4: {14, 16} and {19, 21, 20}: means 15, 20; s.e. 1, 1/sqrt(3)
+  // Generation 4's Student's t: 5 / sqrt(4/3 (1/2 + 1/3)) = 4.74 with df 3, p < 0.05: marked, generation 0
+  // (t = 1 / sqrt(10/9) = 0.95) is not.
+  EXPECT_LT(curve()[4].student.p, 0.05);
+  EXPECT_GT(curve()[0].student.p, 0.05);
+  EXPECT_NE(s.find("$curve using 1:($6 < 0.05 ? "), std::string::npos) << s;
+  EXPECT_NE(s.find("title \"p < 0.05 (Student's t per generation, uncorrected)\""), std::string::npos) << s;
+  std::vector<CurvePoint> untested = curve();
+  for (auto& p : untested) p.student = TTestResult{};
+  EXPECT_EQ(fitness_curve_script(untested, "fig1.png", "Figure 1").find("per generation"), std::string::npos);
   TempDir dir;
   write(dir / "fig1.gp", s);
   ASSERT_TRUE(gnuplot_available());
