@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   for (const auto& a : arms) arm_list += (arm_list.empty() ? "" : ", ") + a;
   app.add_option("--compare", compare,
                  "the two arms to compare, control first: " + arm_list +
-                     " (robozoo-experiment --arms); runs of other arms are listed and left out")
+                     " (robozoo-experiment --arms); runs of other arms are listed, their fitness compared with the control's")
       ->delimiter(',')
       ->expected(2)
       ->check(CLI::IsMember(arms))

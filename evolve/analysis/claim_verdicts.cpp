@@ -175,7 +175,9 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
                            num(f.effect.d_high, 2) + "]";
   if (out.paper_compared) {
     out.outcome = sig ? (primary->direction == "same as the paper" ? "reproduced" : "not reproduced") : "inconclusive";
-    const std::string way = primary->direction == "same as the paper" ? "the paper's way" : "the other way";
+    const std::string way = primary->direction == "same as the paper"       ? "the paper's way"
+                            : primary->direction == "opposite to the paper" ? "the other way"
+                                                                            : "neither way";
     out.headline = "The paper's fitness result (recurrent CPPNs fitter) is **" + out.outcome + "** " + at + ": " +
                    ctl + " " + num(f.control.mean, 2) + " ± " + num(f.control.se, 2) + ", " + exp + " " +
                    num(f.experimental.mean, 2) + " ± " + num(f.experimental.se, 2) + " (mean ± s.e.), " + test +

@@ -95,6 +95,15 @@ TEST(ClaimVerdicts, PrimaryReproducedOnlyWhenSignificantTheSameWay) {
   EXPECT_NE(c.headline.find("the estimate pointing the other way without significance"), std::string::npos)
       << c.headline;
   EXPECT_EQ(row(c, "best_fitness").verdict, "inconclusive: not significant, the estimate points the other way");
+  // Equal means: no direction at all.
+  c = assess_claims(hand_made({10, 12, 14}, {14, 12, 10}));
+  EXPECT_EQ(c.outcome, "inconclusive");
+  EXPECT_EQ(row(c, "best_fitness").direction, "");
+  EXPECT_NE(c.headline.find("the estimate pointing neither way"), std::string::npos) << c.headline;
+  // Too few runs for any test.
+  c = assess_claims(hand_made({10}, {12}));
+  EXPECT_EQ(c.outcome, "inconclusive");
+  EXPECT_NE(c.headline.find("too few runs for the primary test"), std::string::npos) << c.headline;
 }
 
 TEST(ClaimVerdicts, ArmsThePaperDidNotCompare) {

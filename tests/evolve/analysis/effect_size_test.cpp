@@ -91,6 +91,20 @@ TEST(EffectSize, ZeroEffectGivesASymmetricInterval) {
   EXPECT_GT(z.d_high, 0.5);
 }
 
+TEST(EffectSize, HugeEffectsStillGetAnInterval) {
+  // The recurrent start's 110 extra links: t in the hundreds. d = 110.6 / 0.6 with
+  // samples {110, 111, 110, 111, ...} +- 0.5 around their means: the interval holds d.
+  std::vector<double> a, b;
+  for (int i = 0; i < 10; ++i) {
+    a.push_back(213 + (i % 2) - 0.5);
+    b.push_back(103 + (i % 2) - 0.5);
+  }
+  const EffectSize e = effect_size(a, b);
+  EXPECT_GT(e.d, 100);
+  EXPECT_LT(e.d_low, e.d);
+  EXPECT_GT(e.d_high, e.d);
+}
+
 TEST(EffectSize, UndefinedWithoutSpread) {
   EXPECT_TRUE(std::isnan(effect_size({1}, {2, 3}).d));
   EXPECT_TRUE(std::isnan(effect_size({3, 3}, {4, 4}).d));  // s_p = 0
