@@ -103,9 +103,12 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
                                  alpha);
         }
       }
-      const double d = c.effect.d;
-      if ((r.paper_direction == 1 || r.paper_direction == -1) && std::isfinite(d) && d != 0)
-        r.direction = (d > 0) == (r.paper_direction > 0) ? "same as the paper" : "opposite to the paper";
+      // The sign of the difference of the means (d's sign, also where d is undefined:
+      // a sample of one, or two constant samples).
+      const double diff = c.experimental.mean - c.control.mean;
+      if ((r.paper_direction == 1 || r.paper_direction == -1) && c.control.n > 0 && c.experimental.n > 0 &&
+          diff != 0)
+        r.direction = (diff > 0) == (r.paper_direction > 0) ? "same as the paper" : "opposite to the paper";
       out.rows.push_back(r);
     }
   };
@@ -139,7 +142,7 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
       if (sig && r.direction == "same as the paper")
         r.verdict = r.paper_significant ? "agrees: significant" + which
                                         : "significant" + which + ", the paper's way (the paper reports no test)";
-      else if (sig)
+      else if (sig && r.direction == "opposite to the paper")
         r.verdict = "contradicts: significant" + which + ", the other way";
       else
         r.verdict = "inconclusive: not significant" + which + (r.direction.empty() ? "" : ", the estimate points " +

@@ -106,6 +106,25 @@ TEST(ClaimVerdicts, PrimaryReproducedOnlyWhenSignificantTheSameWay) {
   EXPECT_NE(c.headline.find("too few runs for the primary test"), std::string::npos) << c.headline;
 }
 
+TEST(ClaimVerdicts, DirectionWithoutAnEffectSize) {
+  // A run of one against nine: Student's test exists (df 8), d does not; constant
+  // samples give t = inf, p = 0 and no d. The direction comes from the means.
+  ExperimentAnalysis a = hand_made({24, 25, 26, 27}, {28, 29, 30, 31});
+  a.champion = {compare("improvement_same_per_run", "gain, same topology", "fitness units",
+                        {0.1, 0.2, 0.1, 0.2, 0.1, 0.2, 0.1, 0.2, 0.15}, {5.0}),
+                compare("topology_changed_per_run", "share", "share", {0.5, 0.5}, {1.0, 1.0})};
+  const ClaimsAssessment c = assess_claims(a);
+  const ClaimRow& same = row(c, "improvement_same_per_run");
+  EXPECT_TRUE(std::isnan(same.comparison.effect.d));
+  EXPECT_EQ(same.comparison.student.df, 8.0);
+  EXPECT_EQ(same.direction, "same as the paper");
+  EXPECT_EQ(same.verdict, "agrees: significant after Holm");
+  const ClaimRow& share = row(c, "topology_changed_per_run");
+  EXPECT_EQ(share.comparison.student.p, 0.0);
+  EXPECT_EQ(share.direction, "same as the paper");
+  EXPECT_EQ(share.verdict, "agrees: significant after Holm");
+}
+
 TEST(ClaimVerdicts, ArmsThePaperDidNotCompare) {
   ExperimentAnalysis a = hand_made({24, 25, 26, 27}, {28, 29, 30, 31});
   a.control_arm = "recurrent-sparse";
