@@ -181,6 +181,29 @@ TEST(StatsCli, UnfinishedRunsAreLeftOutUnlessAskedFor) {
   EXPECT_EQ(runs.size(), 5u);
 }
 
+TEST(StatsCli, CompareAndAlphaReachTheReport) {
+  TempDir dir;
+  write_hand_made_experiment(dir.path);
+  // Recurrent as the control, feed-forward as the experimental arm, at alpha 0.5:
+  // feed-forward {16, 17} against recurrent {18, 16.5}, t = -0.83, p = 0.49 < 0.5,
+  // recurrent fitter as the paper says: reproduced at this (silly) level.
+  const auto o = run_shell(stats("'" + dir.path + "' --no-plots --no-zoo --compare recurrent,feedforward --alpha 0.5"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  const std::string report = read_file(dir / "stats/report.md");
+  EXPECT_NE(report.find("is **reproduced** at generation 2 (the last) with 2 recurrent and 2 feed-forward runs"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("at α = 0.50"), std::string::npos);
+  EXPECT_NE(report.find("--compare recurrent,feedforward --alpha 0.5\n"), std::string::npos) << report;
+  const auto curve = read_csv(dir / "stats/fitness_curve.csv");
+  EXPECT_EQ(curve.at("2").at("recurrent_n"), "2");
+  // Feed-forward minus recurrent at generation 2.
+  EXPECT_NEAR(num(curve.at("2").at("student_t")), ttest_ind({16, 17}, {18, 16.5}).t, 1e-9);
+  EXPECT_NE(run_shell(stats("'" + dir.path + "' --compare recurrent,recurrent")).status, 0);
+  EXPECT_NE(run_shell(stats("'" + dir.path + "' --compare feedforward,nonsense")).status, 0);
+  EXPECT_NE(run_shell(stats("'" + dir.path + "' --alpha 0.9")).status, 0);
+}
+
 TEST(StatsCli, NoLogsIsAnError) {
   TempDir dir;
   const auto o = run_shell(stats("'" + dir.path + "'"));
