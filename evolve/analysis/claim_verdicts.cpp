@@ -155,6 +155,14 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
     }
   }
 
+  // The primary verdict notes where Welch's test, which does not assume equal
+  // variances, comes out the other side of alpha.
+  for (auto& r : out.rows)
+    if (r.role == ClaimRole::Primary && !std::isnan(r.comparison.welch.p) && !std::isnan(r.comparison.student.p) &&
+        (r.comparison.welch.p < alpha) != (r.comparison.student.p < alpha))
+      r.verdict += std::string("; Welch's test ") + (r.comparison.welch.p < alpha ? "reaches" : "does not reach") +
+                   " α";
+
   // The headline: the primary test.
   const ClaimRow* primary = nullptr;
   for (const auto& r : out.rows)
@@ -173,7 +181,12 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
   const Comparison& f = primary->comparison;
   const bool sig = f.student.p < alpha;
   const std::string test = "Student's t(" + num(f.student.df, 0) + ") = " + num(f.student.t, 2) + ", " +
-                           p_text(f.student.p) + "; Welch's " + p_text(f.welch.p) + "; Cohen's d = " +
+                           p_text(f.student.p) + "; Welch's " + p_text(f.welch.p) +
+                           (!std::isnan(f.welch.p) && (f.welch.p < alpha) != sig
+                                ? std::string(" (Welch's test, without equal variances, ") +
+                                      (sig ? "does not reach" : "reaches") + " α)"
+                                : std::string()) +
+                           "; Cohen's d = " +
                            num(f.effect.d, 2) + ", 95 % CI [" + num(f.effect.d_low, 2) + ", " +
                            num(f.effect.d_high, 2) + "]";
   if (out.paper_compared) {

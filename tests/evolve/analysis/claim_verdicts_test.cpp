@@ -106,6 +106,23 @@ TEST(ClaimVerdicts, PrimaryReproducedOnlyWhenSignificantTheSameWay) {
   EXPECT_NE(c.headline.find("too few runs for the primary test"), std::string::npos) << c.headline;
 }
 
+TEST(ClaimVerdicts, ThePrimaryVerdictSaysWhenWelchDisagrees) {
+  // The reduced experiment's fitness, 10 recurrent runs against 5 of the sparse
+  // start as the control: Student's p = 0.0355 < 0.05, Welch's p = 0.0545 (ttest_test).
+  ExperimentAnalysis a = hand_made({32.04415125, 23.59926401, 32.7971969, 29.61692114, 21.32281508},
+                                   {17.63035334, 19.47156361, 21.99942461, 33.80974258, 20.44670961, 17.93723543,
+                                    20.74533288, 22.11418172, 23.85350344, 18.30391089});
+  a.control_arm = "recurrent-sparse";
+  const ClaimsAssessment c = assess_claims(a);
+  EXPECT_EQ(row(c, "best_fitness").verdict, "significant; Welch's test does not reach α");
+  EXPECT_NE(c.headline.find("Welch's p = 0.055 (Welch's test, without equal variances, does not reach α)"),
+            std::string::npos)
+      << c.headline;
+  // At 10 against 10 with similar spreads the two agree: no note.
+  EXPECT_EQ(assess_claims(hand_made({24, 25, 26, 27}, {28, 29, 30, 31})).headline.find("without equal variances"),
+            std::string::npos);
+}
+
 TEST(ClaimVerdicts, DirectionWithoutAnEffectSize) {
   // A run of one against nine: Student's test exists (df 8), d does not; constant
   // samples give t = inf, p = 0 and no d. The direction comes from the means.
