@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "evolve/analysis/paper_claims.hpp"
+#include "tests/evolve/analysis/hand_made_experiment.hpp"
+#include "tests/support/subprocess.hpp"
 
 namespace robozoo {
 namespace {
@@ -152,6 +154,36 @@ TEST(Report, FiguresZooAndCommands) {
   EXPECT_NE(md.find("**feed-forward**: robozoo-render is missing"), std::string::npos);
   EXPECT_NE(md.find("![recurrent zoo](zoo-recurrent.png)"), std::string::npos);
   EXPECT_NE(md.find("```sh\nbuild/bin/robozoo-stats runs/x\n```"), std::string::npos);
+}
+
+TEST(Report, HandMadeExperimentEndToEnd) {
+  // The four hand-made runs (hand_made_experiment.hpp), read, analysed and reported.
+  testing::TempDir dir;
+  testing::write_hand_made_experiment(dir.path);
+  std::vector<RunAnalysis> runs;
+  for (const char* name : {"feedforward-s1", "feedforward-s2", "recurrent-s1", "recurrent-s2"})
+    runs.push_back(analyze_run(summarize_run_file(dir / (std::string(name) + ".lcmlog"))));
+  ReportInputs in;
+  in.analysis = analyze_experiment(runs);
+  const std::string md = markdown_report(in);
+  // Fitness: recurrent {18, 16.5} against feed-forward {16, 17}: s_p^2 = 1.625 / 2, t = 0.75 / sqrt(0.8125)
+  // = 0.83, df 2, p = 1 - t / sqrt(t^2 + 2) = 0.493; Welch df = 0.8125^2 / (0.5625^2 + 0.25^2) = 1.74.
+  const double t = 0.75 / std::sqrt(0.8125);
+  EXPECT_NEAR(1 - t / std::sqrt(t * t + 2), 0.4929, 1e-4);
+  EXPECT_NE(md.find("is **inconclusive** at generation 2 (the last) with 2 feed-forward and 2 recurrent runs: "
+                    "feed-forward 16.50 ± 0.50, recurrent 17.25 ± 0.75 (mean ± s.e.), Student's t(2) = 0.83, "
+                    "p = 0.493"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 16.50 ± 0.50 (2) | 17.25 ± 0.75 (2) | 0.83, 2, 0.493 | 0.83, 1.7, 0.504 | 0.83 ["),
+            std::string::npos)
+      << md;
+  // Per-run share of topology-changing new champions: feed-forward {0, 1}, recurrent {1, 0.5}.
+  EXPECT_NE(md.find("| 50.00 ± 50.00 % (2) | 75.00 ± 25.00 % (2) |"), std::string::npos) << md;
+  // Pooled events: {0, 1} and {1, 1, 1, 0}, described only.
+  EXPECT_NE(md.find("| 50.00 ± 50.00 % (2) | 75.00 ± 25.00 % (4) | — | — | — | pooled events: descriptive |"),
+            std::string::npos)
+      << md;
 }
 
 TEST(Report, Formatting) {
