@@ -63,6 +63,23 @@ FieldTable<NeatParams> neat_table() {
       .boolean("split_bias_links", &NeatParams::split_bias_links)
       .boolean("structural_draw_decides", &NeatParams::structural_draw_decides)
       .boolean("childless_species_stay", &NeatParams::childless_species_stay)
+      .choice("crossover_genes", &NeatParams::crossover_genes, crossover_genes_name, crossover_genes_from_name)
+      .choice("mutation_order", &NeatParams::mutation_order, mutation_order_name, mutation_order_from_name)
+      .choice("representative", &NeatParams::representative, representative_name, representative_from_name)
+      .choice("threshold_rule", &NeatParams::threshold_rule, threshold_rule_name, threshold_rule_from_name)
+      // A named set of mechanics: written as the set the others match ("custom" when none); read
+      // first (read_neat), so that keys given beside it override it.
+      .custom(
+          "mechanics", [](const NeatParams& p) { return nlohmann::json(neat_mechanics_of(p)); },
+          [](NeatParams& p, const nlohmann::json& v, const std::string& q) {
+            if (!v.is_string()) throw_config_error(q + ": must be a name, got " + shown(v));
+            if (v.get<std::string>() == "custom") return;  // the other keys say what they are
+            try {
+              apply_neat_mechanics(p, neat_mechanics_from_name(v.get<std::string>()));
+            } catch (const std::invalid_argument& e) {
+              throw_config_error(q + ": " + std::string(e.what()) + " or custom");
+            }
+          })
       .custom(
           "hidden_activations",
           [](const NeatParams& p) {
@@ -86,6 +103,16 @@ FieldTable<NeatParams> neat_table() {
             p.hidden_activations = mask;
           });
   return t;
+}
+
+// neat.mechanics first, then every other key (which may override part of the set).
+void read_neat(NeatParams& p, const nlohmann::json& v) {
+  const FieldTable<NeatParams> t = neat_table();
+  if (!v.is_object() || !v.contains("mechanics")) return t.read(p, v);
+  t.read(p, nlohmann::json{{"mechanics", v.at("mechanics")}});
+  nlohmann::json rest = v;
+  rest.erase("mechanics");
+  t.read(p, rest);
 }
 
 FieldTable<GrowthParams> growth_table() {
@@ -171,7 +198,7 @@ FieldTable<RunConfig> top_table() {
                 c.eval.cppn_updates = v.get<int>();
               })
       .custom("neat", [](const RunConfig& c) { return neat_table().write(c.neat); },
-              [](RunConfig& c, const nlohmann::json& v, const std::string&) { neat_table().read(c.neat, v); })
+              [](RunConfig& c, const nlohmann::json& v, const std::string&) { read_neat(c.neat, v); })
       .custom("growth", [](const RunConfig& c) { return growth_table().write(c.eval.growth); },
               [](RunConfig& c, const nlohmann::json& v, const std::string&) {
                 growth_table().read(c.eval.growth, v);

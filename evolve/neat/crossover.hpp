@@ -6,7 +6,7 @@
 
 namespace robozoo {
 
-/// Matching genes (same innovation) are copied whole (weight, enabled flag,
+/// With p.crossover_genes == CrossoverGenes::Fitter (robozoo's): matching genes (same innovation) are copied whole (weight, enabled flag,
 /// birth generation) from either parent with probability 1/2 each; disjoint and
 /// excess genes come from the fitter parent (`a` when fitness_a >= fitness_b)
 /// only, so the child has exactly the fitter parent's structure: its node genes
@@ -15,6 +15,12 @@ namespace robozoo {
 /// disabled in either parent is then inherited disabled with that probability
 /// and enabled otherwise (one draw per such gene, in innovation order); with 0
 /// no draw is made and the chosen gene is copied as it is (HyperNEAT).
+/// With CrossoverGenes::Both (MisterTea's HyperNEAT) every gene of either parent is inherited and a
+/// matching gene comes from `a` with probability fa / (fa + fb) (one draw per matching gene); with
+/// CrossoverGenes::Drawn (the paper's HyperNEAT) one such draw is made for every gene of either
+/// parent, in innovation order: a matching gene comes from the drawn parent, a gene only one parent
+/// has is kept when that parent is drawn. There a fitness of 0 counts as 0.0001, and the child's
+/// nodes are the inputs and outputs and every hidden node its links touch (a's copy first).
 Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
                  const NeatParams& p, Rng& rng);
 /// The same, and with `average_weights` (Stanley's mate_multipoint_avg) every matching gene is
@@ -26,7 +32,7 @@ Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitn
 /// (copied) or is enabled (averaged).
 Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
                  const NeatParams& p, bool average_weights, Rng& rng);
-/// The same with disabled_gene_probability 0.
+/// The same with disabled_gene_probability 0 and CrossoverGenes::Fitter.
 Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, Rng& rng);
 
 }  // namespace robozoo

@@ -228,6 +228,13 @@ void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng
 
 void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
             InnovationTracker& innov, int32_t generation, Rng& rng) {
+  if (p.mutation_order == MutationOrder::Independent) {
+    // HyperNEAT's testMutate: three independent draws; a failed structural mutation changes nothing.
+    if (rng.bernoulli(p.add_node_probability)) mutate_add_node(g, p, innov, generation, rng);
+    if (rng.bernoulli(p.add_link_probability)) mutate_add_link(g, regime, layout, p, innov, generation, rng);
+    if (rng.bernoulli(p.mutate_weights_probability)) mutate_weights(g, p, generation, rng);
+    return;
+  }
   if (rng.bernoulli(p.add_node_probability) &&
       (mutate_add_node(g, p, innov, generation, rng) || p.structural_draw_decides))
     return;

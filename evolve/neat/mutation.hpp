@@ -61,8 +61,12 @@ inline constexpr double kStanleySevereProbability = 0.5;
 /// 0.5 (tail), w = d when u > 0.1 / 0.3, else w kept; any other link w += d. Then clamp.
 void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng);
 
-/// The mutation an offspring gets (the NEAT paper's order, one structural
-/// change at most): with p.add_node_probability add a node; if none was added,
+/// The mutation an offspring gets. With p.mutation_order == MutationOrder::Independent
+/// (HyperNEAT's testMutate): with p.add_node_probability add a node, then with
+/// p.add_link_probability add a link, then with p.mutate_weights_probability mutate the weights
+/// (three draws, always all made; new links are young, so weights mutated after a structural
+/// change perturb them too). With MutationOrder::OneStructural (the NEAT paper's order, one
+/// structural change at most): with p.add_node_probability add a node; if none was added,
 /// with p.add_link_probability add a link; if the structure did not change,
 /// with p.mutate_weights_probability mutate the weights. With
 /// p.structural_draw_decides (Stanley), an add-node or add-link whose draw

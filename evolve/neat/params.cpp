@@ -38,11 +38,37 @@ std::string weight_mutation_rule_name(WeightMutationRule r) {
 }
 std::string crossover_rule_name(CrossoverRule r) { return r == CrossoverRule::Robozoo ? "robozoo" : "stanley"; }
 std::string stagnation_rule_name(StagnationRule r) {
-  return r == StagnationRule::HyperNeat ? "hyperneat" : "stanley";
+  switch (r) {
+    case StagnationRule::Robozoo: return "robozoo";
+    case StagnationRule::Stanley: return "stanley";
+    case StagnationRule::HyperNeat: return "hyperneat";
+  }
+  return "unknown";
 }
 std::string offspring_rounding_name(OffspringRounding r) {
-  return r == OffspringRounding::LargestRemainder ? "largest_remainder" : "skim";
+  switch (r) {
+    case OffspringRounding::LargestRemainder: return "largest_remainder";
+    case OffspringRounding::Skim: return "skim";
+    case OffspringRounding::BestFirst: return "best_first";
+  }
+  return "unknown";
 }
+std::string crossover_genes_name(CrossoverGenes r) {
+  switch (r) {
+    case CrossoverGenes::Fitter: return "fitter";
+    case CrossoverGenes::Both: return "both";
+    case CrossoverGenes::Drawn: return "drawn";
+  }
+  return "unknown";
+}
+std::string mutation_order_name(MutationOrder r) {
+  return r == MutationOrder::OneStructural ? "one_structural" : "independent";
+}
+std::string representative_name(Representative r) {
+  return r == Representative::Champion ? "champion" : "best_ever";
+}
+std::string threshold_rule_name(ThresholdRule r) { return r == ThresholdRule::Clamp ? "clamp" : "hyperneat"; }
+std::string neat_mechanics_name(NeatMechanics m) { return m == NeatMechanics::HyperNeat ? "hyperneat" : "robozoo"; }
 
 LinkRule link_rule_from_name(const std::string& s) {
   return from_name(s, {LinkRule::Positions, LinkRule::CycleTest}, link_rule_name, "link rule");
@@ -70,12 +96,56 @@ CrossoverRule crossover_rule_from_name(const std::string& s) {
   return from_name(s, {CrossoverRule::Robozoo, CrossoverRule::Stanley}, crossover_rule_name, "crossover rule");
 }
 StagnationRule stagnation_rule_from_name(const std::string& s) {
-  return from_name(s, {StagnationRule::HyperNeat, StagnationRule::Stanley}, stagnation_rule_name,
-                   "stagnation rule");
+  return from_name(s, {StagnationRule::Robozoo, StagnationRule::Stanley, StagnationRule::HyperNeat},
+                   stagnation_rule_name, "stagnation rule");
 }
 OffspringRounding offspring_rounding_from_name(const std::string& s) {
-  return from_name(s, {OffspringRounding::LargestRemainder, OffspringRounding::Skim}, offspring_rounding_name,
-                   "offspring rounding");
+  return from_name(s, {OffspringRounding::LargestRemainder, OffspringRounding::Skim, OffspringRounding::BestFirst},
+                   offspring_rounding_name, "offspring rounding");
+}
+CrossoverGenes crossover_genes_from_name(const std::string& s) {
+  return from_name(s, {CrossoverGenes::Fitter, CrossoverGenes::Both, CrossoverGenes::Drawn}, crossover_genes_name,
+                   "crossover genes");
+}
+MutationOrder mutation_order_from_name(const std::string& s) {
+  return from_name(s, {MutationOrder::OneStructural, MutationOrder::Independent}, mutation_order_name,
+                   "mutation order");
+}
+Representative representative_from_name(const std::string& s) {
+  return from_name(s, {Representative::Champion, Representative::BestEver}, representative_name,
+                   "representative");
+}
+ThresholdRule threshold_rule_from_name(const std::string& s) {
+  return from_name(s, {ThresholdRule::Clamp, ThresholdRule::HyperNeat}, threshold_rule_name, "threshold rule");
+}
+NeatMechanics neat_mechanics_from_name(const std::string& s) {
+  return from_name(s, {NeatMechanics::HyperNeat, NeatMechanics::Robozoo}, neat_mechanics_name, "NEAT mechanics");
+}
+
+void apply_neat_mechanics(NeatParams& p, NeatMechanics m) {
+  const bool h = m == NeatMechanics::HyperNeat;
+  p.crossover_genes = h ? CrossoverGenes::Drawn : CrossoverGenes::Fitter;
+  p.mutation_order = h ? MutationOrder::Independent : MutationOrder::OneStructural;
+  p.representative = h ? Representative::BestEver : Representative::Champion;
+  p.threshold_rule = h ? ThresholdRule::HyperNeat : ThresholdRule::Clamp;
+  p.stagnation = h ? StagnationRule::HyperNeat : StagnationRule::Robozoo;
+  p.offspring_rounding = h ? OffspringRounding::BestFirst : OffspringRounding::LargestRemainder;
+  p.childless_species_stay = h;
+  p.interspecies_mating_probability = h ? 0.0 : 0.001;
+}
+
+std::string neat_mechanics_of(const NeatParams& p) {
+  for (NeatMechanics m : {NeatMechanics::HyperNeat, NeatMechanics::Robozoo}) {
+    NeatParams q = p;
+    apply_neat_mechanics(q, m);
+    if (q.crossover_genes == p.crossover_genes && q.mutation_order == p.mutation_order &&
+        q.representative == p.representative && q.threshold_rule == p.threshold_rule &&
+        q.stagnation == p.stagnation && q.offspring_rounding == p.offspring_rounding &&
+        q.childless_species_stay == p.childless_species_stay &&
+        q.interspecies_mating_probability == p.interspecies_mating_probability)
+      return neat_mechanics_name(m);
+  }
+  return "custom";
 }
 
 }  // namespace robozoo

@@ -57,14 +57,20 @@ enum class CrossoverRule : int8_t {
 };
 /// When a species counts as stagnant (its shared fitness then times dropoff_factor).
 enum class StagnationRule : int8_t {
-  /// This generation's improvement is recorded first, the generation champion's species always
-  /// counts as improved (HyperNEAT), and a species is stagnant dropoff_age generations after its
-  /// last improvement.
-  HyperNeat = 0,
+  /// robozoo's own: this generation's improvement is recorded first, the generation champion's
+  /// species always counts as improved, and a species is stagnant dropoff_age generations after
+  /// its last improvement.
+  Robozoo = 0,
   /// Stanley's Species::adjust_fitness: checked before this generation's improvement is recorded,
   /// no exemption for the champion's species, and stagnant from dropoff_age - 1 generations after
   /// the last improvement on (his age_debt of 0 is counted as 1).
   Stanley = 1,
+  /// HyperNEAT's GeneticSpecies::setMultiplier: judged before this generation's improvement is
+  /// recorded; an improvement (or holding the generation champion, HyperNEAT's exemption) in
+  /// generation h lifts the penalty from h + 1 until generation h + dropoff_age; a species
+  /// founded in generation g0 is stagnant from g0 + dropoff_age on. A species' first generation
+  /// is never an improvement (HyperNEAT founds a species with its best member).
+  HyperNeat = 2,
 };
 /// How the population's offspring are divided among species.
 enum class OffspringRounding : int8_t {
@@ -75,6 +81,55 @@ enum class OffspringRounding : int8_t {
   /// at once and fractions carried over ("skim"), one more offspring whenever the carry exceeds 1;
   /// a shortfall goes to the species expecting the most (allocate_offspring_skim).
   Skim = 1,
+  /// HyperNEAT's GeneticPopulation::produceNextGeneration: every species gets the whole part of
+  /// its proportional share; the offspring left over go one each to the species of the
+  /// population's genomes in order of raw fitness, best first, round and round
+  /// (allocate_offspring_best_first).
+  BestFirst = 2,
+};
+/// Which genes crossover passes on.
+enum class CrossoverGenes : int8_t {
+  /// robozoo's (classic NEAT): disjoint and excess genes from the fitter parent only, a matching
+  /// gene from either parent with probability 1/2; the child has the fitter parent's structure.
+  Fitter = 0,
+  /// HyperNEAT's GeneticIndividual crossover (MisterTea/HyperNEAT): every gene of either parent;
+  /// a matching gene from parent a with probability fitness_a / (fitness_a + fitness_b).
+  Both = 1,
+  /// The paper's own HyperNEAT (jauerb/CPPN_Trimesh): one draw per gene of either parent, parent
+  /// a with probability fitness_a / (fitness_a + fitness_b); a matching gene comes from the
+  /// drawn parent, a gene only one parent has is kept when that parent is drawn.
+  Drawn = 2,
+};
+/// Which mutations an offspring may get.
+enum class MutationOrder : int8_t {
+  /// robozoo's (the NEAT paper's): add-node; if none was added, add-link; if the structure did
+  /// not change, the weights.
+  OneStructural = 0,
+  /// HyperNEAT's GeneticIndividual::testMutate: add-node, add-link and the weight mutation are
+  /// three independent draws, in that order; one offspring may get all three.
+  Independent = 1,
+};
+/// Which genome represents a species when the next generation is speciated.
+enum class Representative : int8_t {
+  Champion = 0,  ///< robozoo's: the species' champion of the generation just evaluated
+  /// HyperNEAT's GeneticSpecies::getBestIndividual: the best genome the species ever had (its
+  /// first generation's champion, replaced whenever a champion beats the species' best fitness).
+  BestEver = 1,
+};
+/// How the compatibility threshold moves towards target_species.
+enum class ThresholdRule : int8_t {
+  /// robozoo's: +- compatibility_modifier, never below min_compatibility_threshold.
+  Clamp = 0,
+  /// HyperNEAT's GeneticPopulation::speciate: with m = -modifier (too few species), +modifier (too
+  /// many) or 0: a threshold below |m| + min_compatibility_threshold is halved when m < 0 (raised
+  /// to 0.001 first if below it), else a threshold below m + min_compatibility_threshold is
+  /// doubled, else m is added. (HyperNEAT's constant 0.3 is min_compatibility_threshold here.)
+  HyperNeat = 1,
+};
+/// Named sets of the mechanics above (see apply_neat_mechanics).
+enum class NeatMechanics : int8_t {
+  HyperNeat = 0,  ///< the paper's HyperNEAT (the default)
+  Robozoo = 1,    ///< robozoo's mechanics before it followed HyperNEAT's (NEAT-paper style)
 };
 /// How the compatibility distance counts unmatched genes.
 enum class CompatibilityRule : int8_t {
@@ -89,8 +144,13 @@ std::string add_node_rule_name(AddNodeRule r);           ///< "hyperneat" / "cla
 std::string compatibility_rule_name(CompatibilityRule r);///< "hyperneat" / "classic"
 std::string weight_mutation_rule_name(WeightMutationRule r);  ///< "hyperneat" / "classic" / "stanley"
 std::string crossover_rule_name(CrossoverRule r);        ///< "robozoo" / "stanley"
-std::string stagnation_rule_name(StagnationRule r);      ///< "hyperneat" / "stanley"
-std::string offspring_rounding_name(OffspringRounding r);///< "largest_remainder" / "skim"
+std::string stagnation_rule_name(StagnationRule r);      ///< "robozoo" / "stanley" / "hyperneat"
+std::string offspring_rounding_name(OffspringRounding r);///< "largest_remainder" / "skim" / "best_first"
+std::string crossover_genes_name(CrossoverGenes r);      ///< "fitter" / "both" / "drawn"
+std::string mutation_order_name(MutationOrder r);        ///< "one_structural" / "independent"
+std::string representative_name(Representative r);      ///< "champion" / "best_ever"
+std::string threshold_rule_name(ThresholdRule r);        ///< "clamp" / "hyperneat"
+std::string neat_mechanics_name(NeatMechanics m);        ///< "hyperneat" / "robozoo"
 /// Inverses of the *_name functions; throw std::invalid_argument listing the names.
 LinkRule link_rule_from_name(const std::string& s);
 InitialLinks initial_links_from_name(const std::string& s);
@@ -101,6 +161,11 @@ WeightMutationRule weight_mutation_rule_from_name(const std::string& s);
 CrossoverRule crossover_rule_from_name(const std::string& s);
 StagnationRule stagnation_rule_from_name(const std::string& s);
 OffspringRounding offspring_rounding_from_name(const std::string& s);
+CrossoverGenes crossover_genes_from_name(const std::string& s);
+MutationOrder mutation_order_from_name(const std::string& s);
+Representative representative_from_name(const std::string& s);
+ThresholdRule threshold_rule_from_name(const std::string& s);
+NeatMechanics neat_mechanics_from_name(const std::string& s);
 
 struct NeatParams {
   int population = 150;                  ///< genomes per generation (count)
@@ -124,7 +189,9 @@ struct NeatParams {
   double weight_limit = 5.0;             ///< weights clamped to [-x, x] (weight units)
   double initial_weight_range = 3.0;     ///< initial weights uniform in [-x, x] (weight units)
   double mutate_only_probability = 0.25; ///< offspring made by mutation alone (no crossover)
-  double interspecies_mating_probability = 0.001;  ///< crossover partner from another species
+  /// Crossover partner from another species (probability; HyperNEAT has no interspecies mating: 0;
+  /// robozoo's mechanics 0.001, the NEAT paper's value).
+  double interspecies_mating_probability = 0.0;
   int species_elitism_min_offspring = 5; ///< a species with at least this many offspring keeps its champion
   int add_link_tries = 20;               ///< attempts to find a new, legal link with add_link "tries" (count)
   LinkRule link_rule = LinkRule::Positions;          ///< which links the feed-forward regime allows
@@ -169,7 +236,7 @@ struct NeatParams {
   /// When a species is stagnant (see StagnationRule).
   StagnationRule stagnation = StagnationRule::HyperNeat;
   /// How offspring are divided among species (see OffspringRounding).
-  OffspringRounding offspring_rounding = OffspringRounding::LargestRemainder;
+  OffspringRounding offspring_rounding = OffspringRounding::BestFirst;
   /// Population-level stagnation (Stanley's delta coding): when the population's best raw fitness
   /// has not beaten its record for this many generations (Stanley: dropoff_age + 5 = 20), only
   /// the two species with the best champions reproduce, half the population each, all from their
@@ -186,7 +253,28 @@ struct NeatParams {
   /// true (Stanley): a species allotted no offspring stays a candidate when the new generation
   /// is speciated (represented by its champion) and lives on if another species' offspring
   /// joins it; false: it dies at once.
-  bool childless_species_stay = false;
+  bool childless_species_stay = true;
+
+  // HyperNEAT's own mechanics (NEAT_GeneticIndividual, NEAT_GeneticSpecies, NEAT_GeneticPopulation;
+  // the paper's copy in jauerb/CPPN_Trimesh where the two differ). The defaults, here and in
+  // interspecies_mating_probability, stagnation, offspring_rounding and childless_species_stay
+  // above, are HyperNEAT's (apply_neat_mechanics(p, NeatMechanics::HyperNeat));
+  // NeatMechanics::Robozoo restores robozoo's earlier ones.
+  /// Which genes crossover passes on and how a matching gene's parent is chosen.
+  CrossoverGenes crossover_genes = CrossoverGenes::Drawn;
+  /// Which mutations an offspring may get.
+  MutationOrder mutation_order = MutationOrder::Independent;
+  /// Which genome represents a species at the next speciation.
+  Representative representative = Representative::BestEver;
+  /// How the compatibility threshold moves.
+  ThresholdRule threshold_rule = ThresholdRule::HyperNeat;
 };
+
+/// Sets the mechanics a named set decides (crossover_genes, mutation_order, representative,
+/// threshold_rule, stagnation, offspring_rounding, childless_species_stay,
+/// interspecies_mating_probability); leaves every other field alone.
+void apply_neat_mechanics(NeatParams& p, NeatMechanics m);
+/// The name of the set p's mechanics match, or "custom" when they match none.
+std::string neat_mechanics_of(const NeatParams& p);
 
 }  // namespace robozoo

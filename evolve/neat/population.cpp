@@ -67,6 +67,14 @@ void validate_neat_params(const NeatParams& p) {
                                   std::to_string(p.hidden_activations));
 }
 
+void validate_regime_params(Regime regime, const NeatParams& p) {
+  if (regime == Regime::FeedForward && p.link_rule == LinkRule::CycleTest &&
+      p.crossover_genes != CrossoverGenes::Fitter)
+    throw std::invalid_argument("neat.crossover_genes: " + crossover_genes_name(p.crossover_genes) +
+                                " joins both parents' links, which can close a cycle under neat.link_rule = "
+                                "cycle_test in the feed-forward regime (use fitter, or link_rule positions)");
+}
+
 void validate_regime_links(const Genome& g, Regime regime, const NeatParams& p) {
   for (const auto& l : g.links) {
     if (l.from == l.to && !(regime == Regime::Recurrent && p.self_loops))
@@ -88,6 +96,7 @@ void validate_regime_links(const Genome& g, Regime regime, const NeatParams& p) 
 Population::Population(const NeatParams& params, Regime regime, const GenomeLayout& layout, Rng& rng)
     : params_(params), regime_(regime), layout_(layout) {
   validate_neat_params(params_);
+  validate_regime_params(regime_, params_);
   s_.generation = 0;
   s_.compatibility_threshold = params_.compatibility_threshold;
   s_.next_innovation = first_free_innovation(layout_);
@@ -103,6 +112,7 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
                        PopulationState state)
     : params_(params), regime_(regime), layout_(layout), s_(std::move(state)) {
   validate_neat_params(params_);
+  validate_regime_params(regime_, params_);
   auto fail = [](const std::string& what) {
     throw std::invalid_argument("population state: " + what);
   };
@@ -190,12 +200,28 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
   rep.champion = champ;
   rep.champion_fitness = fitness[champ];
   const bool stanley_stagnation = params_.stagnation == StagnationRule::Stanley;
+  const bool hyperneat_stagnation = params_.stagnation == StagnationRule::HyperNeat;
   std::vector<double> sizes;
+  // Whether each species' champion becomes its best genome ever (Representative::BestEver): in its
+  // first generation, or when it beats the species' best fitness.
+  std::vector<char> new_best(species.size(), 0);
   for (size_t si = 0; si < species.size(); ++si) {
     Species& sp = species[si];
     const double best = fitness[static_cast<size_t>(sp.members.front())];
+    new_best[si] = sp.age == 0 || best > sp.best_fitness;
     bool stagnant;
-    if (stanley_stagnation) {
+    if (hyperneat_stagnation) {
+      // HyperNEAT: judged before this generation's improvement is recorded (the improvement of
+      // generation h counts from h + 1); a species' first generation is no improvement.
+      stagnant = gen - sp.last_improvement > params_.dropoff_age;
+      if (sp.age == 0) {
+        sp.best_fitness = std::max(sp.best_fitness, best);
+      } else if (best > sp.best_fitness) {
+        sp.best_fitness = best;
+        sp.last_improvement = gen;
+      }
+      if (si == champ_si) sp.last_improvement = gen;
+    } else if (stanley_stagnation) {
       // Stanley: judged before this generation's improvement is recorded; his age debt of 0
       // counts as 1, so the penalty starts dropoff_age - 1 generations after the improvement.
       stagnant = gen - sp.last_improvement >= params_.dropoff_age - 1;
@@ -231,6 +257,19 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
       }
     }
     counts = allocate_offspring_skim(values, static_cast<int>(n));
+  } else if (params_.offspring_rounding == OffspringRounding::BestFirst) {
+    std::vector<size_t> order(n);
+    for (size_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return fitness[x] > fitness[y]; });
+    std::vector<size_t> species_by_rank;
+    species_by_rank.reserve(n);
+    for (size_t i : order)
+      for (size_t si = 0; si < species.size(); ++si)
+        if (species[si].id == s_.species_of[i]) {
+          species_by_rank.push_back(si);
+          break;
+        }
+    counts = allocate_offspring_best_first(rep.adjusted, static_cast<int>(n), species_by_rank);
   } else {
     counts = allocate_offspring(rep.adjusted, static_cast<int>(n), sizes);
   }
@@ -359,7 +398,8 @@ void Population::advance(const std::vector<double>& fitness, Rng& rng) {
   for (size_t si = 0; si < species.size(); ++si) {
     if (counts[si] == 0 && !params_.childless_species_stay) continue;
     Species sp = std::move(species[si]);
-    sp.representative = s_.genomes[static_cast<size_t>(sp.members.front())];
+    if (params_.representative == Representative::Champion || new_best[si])
+      sp.representative = s_.genomes[static_cast<size_t>(sp.members.front())];
     sp.age += 1;
     surviving.push_back(std::move(sp));
   }

@@ -4,18 +4,23 @@
 // All randomness comes from the Rng passed in.
 //
 // One generation, as Population::advance runs it (docs/method.md, "CPPN-NEAT";
-// where the paper is silent the C++ HyperNEAT package and the NEAT paper
-// decide, as noted):
+// where the paper is silent the C++ HyperNEAT package decides; the defaults are
+// HyperNEAT's mechanics, robozoo's earlier ones noted in brackets):
 //  1. Each species' members are ranked by raw fitness (stable: ties keep
 //     population order). The generation champion is the first genome with the
 //     highest fitness.
-//  2. A species improves when its best member beats its best fitness ever; the
-//     champion's species always counts as improved (HyperNEAT). A species that
-//     has not improved for dropoff_age generations is stagnant.
+//  2. Stagnation (stagnation = hyperneat): judged first, a species is stagnant
+//     more than dropoff_age generations after its last improvement (its
+//     founding counts as the previous generation's); then this generation's
+//     improvement is recorded: its champion beating its best fitness (not in
+//     its first generation), or holding the generation champion. [robozoo:
+//     improvement recorded first, stagnant dropoff_age generations after it.]
 //  3. Explicit fitness sharing: a species' share is its mean raw fitness
-//     (times dropoff_factor when stagnant); offspring are allocated in
-//     proportion by largest remainder, summing exactly to the population. The
-//     champion's species gets at least one (taken from the largest allocation).
+//     (times dropoff_factor when stagnant); each species gets the whole part
+//     of its proportional share, the rest go one each to the species of the
+//     best genomes, best first (offspring_rounding = best_first) [largest
+//     remainder]. The champion's species gets at least one (taken from the
+//     largest allocation).
 //  4. The next generation starts with an unchanged copy of the generation
 //     champion; then, species by species, an unchanged copy of the species
 //     champion when the species has at least species_elitism_min_offspring
@@ -23,14 +28,18 @@
 //     rest as children of the best num_parents() members: with
 //     mutate_only_probability (or when only one parent) a mutated copy of one
 //     parent, else a mutated crossover of two different parents (the second
-//     from another species' champion with interspecies_mating_probability).
-//  5. Every species' representative becomes its champion of the generation
-//     just evaluated; the new generation is speciated in order against them
-//     (NEAT speciates offspring as they are born), then the threshold adjusted.
+//     from another species' champion with interspecies_mating_probability, 0
+//     in HyperNEAT). Crossover and mutation follow crossover_genes and
+//     mutation_order.
+//  5. Every species' representative becomes its best genome ever
+//     (representative = best_ever) [its champion of the generation]; species
+//     without offspring stay candidates (childless_species_stay) [die]; the new
+//     generation is speciated in order against them (species left without
+//     members die), then the threshold adjusted (threshold_rule).
 // Copies get fresh ids: every genome of a run has its own id, increasing.
 //
-// Options that follow Stanley's own NEAT C++ instead (all off by default; see
-// params.hpp): crossover_rule, mate_average_probability, mate_only_probability
+// Options that follow Stanley's own NEAT C++ instead (all off by default; the
+// neat-paper XOR preset uses them on top of NeatMechanics::Robozoo; see params.hpp): crossover_rule, mate_average_probability, mate_only_probability
 // and independent_parents change step 4's matings; keep_generation_champion =
 // false drops the generation champion's copy and its species' guaranteed
 // offspring; stagnation = stanley decides stagnation before this generation's
@@ -144,6 +153,11 @@ class Population {
 
 /// Throws std::invalid_argument naming the first parameter out of range.
 void validate_neat_params(const NeatParams& p);
+
+/// Throws std::invalid_argument when the parameters do not fit the regime: a crossover that joins
+/// both parents' links (crossover_genes both / drawn) with the cycle-test link rule in the
+/// feed-forward regime, where the union of two acyclic genomes may hold a cycle.
+void validate_regime_params(Regime regime, const NeatParams& p);
 
 /// Throws std::invalid_argument when g holds a link gene (enabled or not) that
 /// the regime never allows: in the feed-forward regime a non-forward link

@@ -129,6 +129,36 @@ std::vector<int> allocate_offspring_skim(const std::vector<std::vector<double>>&
   return counts;
 }
 
+std::vector<int> allocate_offspring_best_first(const std::vector<double>& shares, int total,
+                                               const std::vector<size_t>& species_by_rank) {
+  if (total < 0) throw std::invalid_argument("allocate_offspring_best_first: negative total " + std::to_string(total));
+  double sum = 0.0;
+  for (double x : shares) {
+    if (!std::isfinite(x) || x < 0.0)
+      throw std::invalid_argument("allocate_offspring_best_first: shares must be finite and >= 0, got " +
+                                  std::to_string(x));
+    sum += x;
+  }
+  std::vector<int> counts(shares.size(), 0);
+  int given = 0;
+  if (sum > 0.0)
+    for (size_t i = 0; i < shares.size(); ++i) {
+      counts[i] = std::min(static_cast<int>(shares[i] / sum * total), total - given);
+      given += counts[i];
+    }
+  if (given < total && species_by_rank.empty())
+    throw std::invalid_argument("allocate_offspring_best_first: offspring left over but no genome ranked");
+  for (size_t k = 0; given < total; k = (k + 1) % species_by_rank.size()) {
+    const size_t s = species_by_rank[k];
+    if (s >= counts.size())
+      throw std::invalid_argument("allocate_offspring_best_first: rank " + std::to_string(k) + " names species " +
+                                  std::to_string(s) + " of " + std::to_string(counts.size()));
+    ++counts[s];
+    ++given;
+  }
+  return counts;
+}
+
 int num_parents(int species_size, const NeatParams& p) {
   if (species_size <= 0) return 0;
   const int n = static_cast<int>(std::floor(p.survival_threshold * species_size)) + 1;

@@ -38,6 +38,15 @@ std::vector<int> allocate_offspring(const std::vector<double>& shares, int total
 /// finite, or no value is positive.
 std::vector<int> allocate_offspring_skim(const std::vector<std::vector<double>>& member_values, int total);
 
+/// HyperNEAT's division (OffspringRounding::BestFirst): species i first gets
+/// floor(shares[i] / sum * total) (nothing when every share is 0); the offspring left over go one
+/// each to species_by_rank[0], species_by_rank[1], ... (the species of the population's genomes,
+/// best raw fitness first), starting again at the front until none is left. The counts sum to
+/// `total`. Throws std::invalid_argument for negative or non-finite shares, an empty ranking
+/// while offspring are left over, or a rank naming no species.
+std::vector<int> allocate_offspring_best_first(const std::vector<double>& shares, int total,
+                                               const std::vector<size_t>& species_by_rank);
+
 /// How many of a species' best members may reproduce:
 /// floor(survival_threshold * size) + 1, at most size.
 int num_parents(int species_size, const NeatParams& p);

@@ -25,7 +25,8 @@ std::vector<int32_t> speciate(const std::vector<Genome>& genomes, std::vector<Sp
       Species s;
       s.id = next_species_id++;
       s.age = 0;
-      s.last_improvement = generation;
+      // HyperNEAT counts a species' founding as an improvement one generation before it.
+      s.last_improvement = p.stagnation == StagnationRule::HyperNeat ? generation - 1 : generation;
       s.best_fitness = 0.0;
       s.representative = genomes[i];
       s.members.push_back(static_cast<int>(i));
@@ -40,6 +41,15 @@ std::vector<int32_t> speciate(const std::vector<Genome>& genomes, std::vector<Sp
 }
 
 double adjust_threshold(double threshold, int num_species, const NeatParams& p) {
+  if (p.threshold_rule == ThresholdRule::HyperNeat) {
+    const double m = num_species < p.target_species   ? -p.compatibility_modifier
+                     : num_species > p.target_species ? p.compatibility_modifier
+                                                      : 0.0;
+    const double floor = p.min_compatibility_threshold;
+    if (m < 0.0 && threshold < -m + floor) return std::max(threshold, kHyperNeatThresholdFloor) / 2.0;
+    if (threshold < m + floor) return threshold * 2.0;
+    return threshold + m;
+  }
   if (num_species > p.target_species) return threshold + p.compatibility_modifier;
   if (num_species < p.target_species)
     return std::max(p.min_compatibility_threshold, threshold - p.compatibility_modifier);

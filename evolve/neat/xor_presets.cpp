@@ -28,6 +28,8 @@ XorPreset xor_preset(const std::string& name) {
     x.sigmoid_only = bit(Activation::SteepenedSigmoid);
     x.all_three = bit(Activation::SteepenedSigmoid) | bit(Activation::SignedCosine) | bit(Activation::Gaussian);
     NeatParams& p = x.params;
+    // The NEAT paper's check keeps robozoo's earlier mechanics under the Stanley options below.
+    apply_neat_mechanics(p, NeatMechanics::Robozoo);
     p.hidden_activations = x.sigmoid_only;
     p.excess_coefficient = 1.0;
     p.disjoint_coefficient = 1.0;

@@ -101,6 +101,7 @@ TEST(Crossover, ClassicNeatInheritsADisabledGeneDisabledThreeTimesInFour) {
   // parent. With probability 0.75 each is inherited disabled, else enabled,
   // whichever parent's copy was drawn; genes enabled in both stay enabled.
   NeatParams p;
+  p.crossover_genes = CrossoverGenes::Fitter;  // robozoo's crossover, the rule's home
   p.disabled_gene_probability = 0.75;
   Rng rng(31);
   const int n = 4000;
@@ -118,7 +119,9 @@ TEST(Crossover, ClassicNeatInheritsADisabledGeneDisabledThreeTimesInFour) {
   // Probability 0 (HyperNEAT, the default): the drawn gene as it is, no extra draw.
   Rng r1(32), r2(32);
   const Genome plain = crossover(parent_a(), 2.0, parent_b(), 1.0, r1);
-  const Genome zero = crossover(parent_a(), 2.0, parent_b(), 1.0, NeatParams{}, r2);
+  NeatParams zero_probability;  // the default, 0
+  zero_probability.crossover_genes = CrossoverGenes::Fitter;
+  const Genome zero = crossover(parent_a(), 2.0, parent_b(), 1.0, zero_probability, r2);
   EXPECT_EQ(plain, zero);
   EXPECT_EQ(r1.state(), r2.state());
 }

@@ -148,8 +148,11 @@ TEST(Population, RejectsBadFitness) {
 TEST(Population, StagnantSpeciesDropOff) {
   // Equal fitness for all: only the champion's species (the first genome's)
   // ever counts as improving after its first generation; others stagnate
-  // after dropoff_age generations and lose their offspring.
+  // after dropoff_age generations and lose their offspring. (robozoo's
+  // mechanics: HyperNEAT's stagnation and rounding are tested in
+  // hyperneat_test.cpp.)
   NeatParams p;
+  apply_neat_mechanics(p, NeatMechanics::Robozoo);
   Rng rng(7);
   Population pop(p, Regime::FeedForward, xor_layout(), rng);
   int stagnant_seen = 0;

@@ -598,11 +598,11 @@ TEST(StanleyOptions, ConfigKeysAndDefaults) {
   EXPECT_FALSE(d.independent_parents);
   EXPECT_TRUE(d.keep_generation_champion);
   EXPECT_EQ(d.stagnation, StagnationRule::HyperNeat);
-  EXPECT_EQ(d.offspring_rounding, OffspringRounding::LargestRemainder);
+  EXPECT_EQ(d.offspring_rounding, OffspringRounding::BestFirst);  // HyperNEAT's, the default
   EXPECT_EQ(d.population_stagnation_generations, 0);
   EXPECT_TRUE(d.split_bias_links);
   EXPECT_FALSE(d.structural_draw_decides);
-  EXPECT_FALSE(d.childless_species_stay);
+  EXPECT_TRUE(d.childless_species_stay);  // HyperNEAT keeps a species while it finds members
   const RunConfig c = config_from_json(
       {{"neat",
         {{"mate_average_probability", 0.4}, {"mate_only_probability", 0.2}, {"crossover_rule", "stanley"},
