@@ -92,7 +92,7 @@ TEST(Report, Formatting) {
 }
 
 TEST(PaperClaims, EveryClaimNamesAStatisticTheAnalysisComputes) {
-  // The champion-change figures the issue quotes are among the claims.
+  // The champion-change figures of the paper's section 4 are among the claims.
   bool found = false;
   for (const auto& c : paper_claims()) found |= c.key == "topology_changed" && c.paper.find("96.99") != std::string::npos;
   EXPECT_TRUE(found);
