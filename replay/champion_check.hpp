@@ -1,7 +1,7 @@
 #pragma once
 // Checking one logged genome: decode it, grow it and compare the morphology
 // field by field, re-simulate it and compare every logged pose with the state
-// at that step, re-evaluate it and compare the fitness (issue 6, part 1).
+// at that step, re-evaluate it and compare the fitness.
 #include <cstdint>
 #include <string>
 #include <vector>

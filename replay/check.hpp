@@ -1,7 +1,7 @@
 #pragma once
 // `robozoo-replay check`: every champion of a log re-grown, re-simulated and
 // re-evaluated with the configuration of its run's ROBOZOO_RUN, compared with
-// what was logged (issue 6, part 1).
+// what was logged.
 #include <cstddef>
 #include <functional>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // `robozoo-replay check --full`: the whole evolution re-run from the log's
 // ROBOZOO_RUN (its seed and configuration), and every message it writes compared
-// with the log's, in order (issue 13, part 2). It costs one evolution.
+// with the log's, in order. It costs one evolution.
 //
 // Left out of the comparison (the volatile fields, nothing else):
 //   - utime of every message (publication time);

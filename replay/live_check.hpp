@@ -1,7 +1,6 @@
 #pragma once
 // `robozoo-replay check --lcm-url`: a replay process that joins a running
-// evolution on the bus and proves each champion while the run goes on (issue
-// 13, part 3). As each generation's messages are complete (the next ROBOZOO_RUN
+// evolution on the bus and proves each champion while the run goes on. As each generation's messages are complete (the next ROBOZOO_RUN
 // or ROBOZOO_GENERATION of its run arrives, or the input ends), its champion is
 // re-grown, re-simulated and re-evaluated with the configuration of the run's
 // ROBOZOO_RUN, exactly as `check` does for a log, and a verdict line is printed.

@@ -1,6 +1,6 @@
 #pragma once
 // `robozoo-replay sim`: re-simulate one logged genome and publish its full-rate
-// pose stream at real time (issue 6, part 3), so that `robozoo-render live`
+// pose stream at real time, so that `robozoo-render live`
 // can film a champion that was logged without poses.
 //
 // It first sends the run's latest ROBOZOO_RUN and the genome's ROBOZOO_GENOME

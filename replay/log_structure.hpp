@@ -1,6 +1,6 @@
 #pragma once
-// The messages of a log as robozoo-evolve writes them, proved one by one
-// (issue 13, part 1). For each run (events of several runs may interleave):
+// The messages of a log as robozoo-evolve writes them, proved one by one.
+// For each run (events of several runs may interleave):
 //
 //   ROBOZOO_RUN                       first event of the run; repeated once before
 //                                     each generation (for late joiners), every

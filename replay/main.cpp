@@ -1,5 +1,5 @@
 // robozoo-replay: check that logged runs are deterministic, replay them on an
-// LCM bus, and re-simulate a logged genome live (issue 6).
+// LCM bus, and re-simulate a logged genome live.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>

@@ -1,6 +1,5 @@
 #pragma once
-// `robozoo-replay play`: republish a log on an LCM bus at real-time speed
-// (issue 6, part 2).
+// `robozoo-replay play`: republish a log on an LCM bus at real-time speed.
 //
 // Timing: an event goes out after the previous one by the gap between their
 // log timestamps, divided by --speed. A champion's trajectory is logged in one

@@ -1,7 +1,7 @@
-// robozoo-experiment: the paper's experiment (issue 7). Runs N seeds of each
+// robozoo-experiment: the paper's experiment. Runs N seeds of each
 // regime (feed-forward and recurrent CPPNs) with robozoo-evolve, one log per
 // trial in --out, one trial after the other, each locally (--workers) or as an
-// MPI job (--mpi N: mpirun -np N robozoo-evolve --mpi, issue 8). It can be stopped (Ctrl-C, SIGTERM)
+// MPI job (--mpi N: mpirun -np N robozoo-evolve --mpi). It can be stopped (Ctrl-C, SIGTERM)
 // and started again at any time: finished trials are skipped, a stopped one is
 // resumed from its checkpoint, the others are started. Prints progress across
 // the whole experiment with an estimated finish time. Then: robozoo-stats DIR.

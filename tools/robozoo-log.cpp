@@ -1,4 +1,4 @@
-// robozoo-log: a log from the terminal, for people who script (issue 14).
+// robozoo-log: a log from the terminal, for people who script.
 //   robozoo-log summary LOG [--json]                      channels, counts, runs, generations, champions, version
 //   robozoo-log cat LOG [--channel C] [--generation G]    one JSON object per message (jq, pandas)
 //   robozoo-log bus SENT RECORDED                         what a bus recording (lcm-logger) lost or changed

@@ -1,5 +1,5 @@
 // robozoo-mpi-bench: what an MPI run costs, measured on a real run, and what it
-// would cost on a cluster (issue 8). Under `mpirun -np N robozoo-mpi-bench ...` it
+// would cost on a cluster. Under `mpirun -np N robozoo-mpi-bench ...` it
 // runs an evolution exactly as `robozoo-evolve --mpi` does (rank 0: NEAT, log,
 // checkpoints; ranks 1..N-1: evaluations over the MPI transport) and measures:
 //   - per rank: jobs, time in the work function, evaluations per second;

@@ -1,5 +1,5 @@
-// robozoo-stats: the paper's figures from a folder of robozoo-evolve logs
-// (issue 7): Figure 1 (mean best-so-far fitness per generation, +-1 standard
+// robozoo-stats: the paper's figures from a folder of robozoo-evolve logs:
+// Figure 1 (mean best-so-far fitness per generation, +-1 standard
 // error), Figure 2 (body plans of the best-of-run robots), Figure 3 (their
 // CPPNs), the champion-change analysis of section 4; for every compared
 // statistic Student's and Welch's t-tests, Cohen's d with its confidence

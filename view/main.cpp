@@ -1,5 +1,5 @@
 // robozoo-view: watch a run in the browser, live from the bus or played from a
-// log (issue 14). One page on http://127.0.0.1:8080, fed over a WebSocket.
+// log. One page on http://127.0.0.1:8080, fed over a WebSocket.
 #include <signal.h>
 
 #include <CLI/CLI.hpp>

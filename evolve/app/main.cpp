@@ -1,6 +1,6 @@
 // robozoo-evolve: CPPN-NEAT evolution of complete robots, published over LCM
-// and logged (issue 4); `robozoo-evolve eval` grows and simulates one genome;
-// `mpirun -np N robozoo-evolve --mpi ...` evaluates on the ranks of an MPI job (issue 8).
+// and logged; `robozoo-evolve eval` grows and simulates one genome;
+// `mpirun -np N robozoo-evolve --mpi ...` evaluates on the ranks of an MPI job.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // The state of a run between two generations, written atomically (write a
 // temporary file, fsync, rename) after every generation, so that a run killed at
-// any moment resumes exactly (issue 4, docs/method.md section 4).
+// any moment resumes exactly (docs/method.md section 4).
 #include <cstdint>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The evolution process of robozoo-evolve (issue 4): CPPN-NEAT on directed
+// The evolution process of robozoo-evolve: CPPN-NEAT on directed
 // displacement, every event written to the run's LCM log and, when live, to
 // the bus; a checkpoint after every generation.
 #include <functional>

@@ -430,7 +430,7 @@ double page_frame_rate(HeadlessBrowser& browser, const std::string& session, dou
 TEST(ViewBrowser, FrameRateOfAFiftySphereRobot) {
   IN_NAMESPACE();
   TempDir dir;
-  // ROBOZOO_VIEW_FPS_LOG and ROBOZOO_VIEW_FPS_GENERATION measure a real log instead (README's figure).
+  // ROBOZOO_VIEW_FPS_LOG and ROBOZOO_VIEW_FPS_GENERATION measure a real log instead (the figure in docs/performance.md).
   const char* real = std::getenv("ROBOZOO_VIEW_FPS_LOG");
   std::string log = dir / "sway.lcmlog";
   std::vector<std::string> args = {bin("robozoo-view"), "--port", "8080", "--loop"};
@@ -490,7 +490,7 @@ TEST(ViewBrowser, LatencyAndServerCpuWhileEvolvePublishes) {
   HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
   const std::string a = browser.open(kPage);
   ASSERT_TRUE(wait_for([&] { return page_connected(browser, a); }, 30)) << read_file(dir / "chromium.txt");
-  // ROBOZOO_VIEW_MEASURE_ARGS: other evolve sizes for the README's figures.
+  // ROBOZOO_VIEW_MEASURE_ARGS: other evolve sizes for the figures in docs/performance.md.
   std::vector<std::string> size = {"--seed", "7", "--population", "24", "--generations", "6", "--steps", "600", "--quiet"};
   if (const char* e = std::getenv("ROBOZOO_VIEW_MEASURE_ARGS")) {
     size.clear();
