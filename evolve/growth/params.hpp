@@ -25,6 +25,11 @@ struct GrowthParams {
   double cloud_step = 0.01;         ///< angle between cloud points (rad)
   double bound = 2.0;               ///< sphere centres must have |x|, |y| <= bound (m)
   int max_spheres = 50;             ///< growth stops at this many spheres (count)
+  /// Relative tolerance of placement rules (b), (c), (d) (dimensionless): a distance
+  /// within touch_tolerance * limit of its limit counts as exactly at the limit, so
+  /// spheres that touch in exact geometry touch whatever the last bit of rounding says
+  /// (docs/method.md section 2.3).
+  double touch_tolerance = 1e-9;
 };
 
 /// Checks that growth can run with these parameters (positive radii with
