@@ -168,6 +168,7 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::
 std::string arm_title(const std::string& arm) {
   if (arm == "feedforward") return "feed-forward";
   if (arm == "recurrent-sparse") return "recurrent (sparse start)";
+  if (arm == "recurrent-zero") return "recurrent (start's recurrent links at 0)";
   return arm;
 }
 
