@@ -99,9 +99,10 @@ void print_status(const Experiment& e) {
 int main(int argc, char** argv) {
   CLI::App app{
       "robozoo-experiment: run the paper's experiment, --trials trials of each arm (feed-forward and\n"
-      "recurrent CPPNs; optionally recurrent CPPNs from the control's sparse start) with robozoo-evolve,\n"
-      "one log per trial in --out (<arm>-s<seed>.lcmlog). No two trials share a seed: trial k of arm a\n"
-      "(0 feedforward, 1 recurrent, 2 recurrent-sparse) uses seed 3(k-1)+a+1. Stop it at any time (Ctrl-C)\n"
+      "recurrent CPPNs; optionally recurrent CPPNs from the control's sparse start, or from the recurrent\n"
+      "start with its recurrent links at weight 0) with robozoo-evolve, one log per trial in --out\n"
+      "(<arm>-s<seed>.lcmlog). No two trials share a seed: trial k of arm a (0 feedforward, 1 recurrent,\n"
+      "2 recurrent-sparse, 3 recurrent-zero) uses seed 4(k-1)+a+1. Stop it at any time (Ctrl-C)\n"
       "and run the same command again: finished trials are skipped, a stopped one is resumed, the others\n"
       "are started. The paper's sizes are the defaults (30 trials, population 150, 500 generations).\n"
       "Afterwards: robozoo-stats DIR."};
@@ -114,9 +115,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> arm_names = {"feedforward", "recurrent"};
   app.add_option("--arms", arm_names,
                  "the arms, comma-separated: feedforward (control), recurrent (experimental, HyperNEAT's fully "
-                 "recurrent start), recurrent-sparse (recurrence allowed, the control's 99-link start)")
+                 "recurrent start), recurrent-sparse (recurrence allowed, the control's 99-link start), recurrent-zero "
+                 "(the recurrent start, its 110 output-to-output links at weight 0)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"feedforward", "recurrent", "recurrent-sparse"}))
+      ->check(CLI::IsMember({"feedforward", "recurrent", "recurrent-sparse", "recurrent-zero"}))
       ->capture_default_str();
   app.add_option("--generations", p.generations, "generations per trial (paper: 500)")->check(CLI::Range(1, 1000000000));
   app.add_option("--population", p.population, "genomes per generation (paper: 150)")->check(CLI::Range(2, 1000000));

@@ -19,7 +19,8 @@ using namespace robozoo;
 int main(int argc, char** argv) {
   CLI::App app{
       "robozoo-gen0: grow N generation-0 genomes of each arm (feedforward: 99 links; recurrent: 209; "
-      "recurrent-sparse: recurrence allowed, 99 links) with the default configuration and print what share "
+      "recurrent-sparse: recurrence allowed, 99 links; recurrent-zero: 209 links, the 110 output-to-output ones "
+      "at weight 0) with the default configuration and print what share "
       "grows beyond the root, has a joint, a joint and a distance sensor, and earns simulation."};
   int64_t genomes = 1000;
   uint64_t seed = 1;
@@ -43,10 +44,10 @@ int main(int argc, char** argv) {
   if (!json)
     std::printf("%-17s %7s %6s %12s %11s %16s %10s %8s\n", "arm", "genomes", "links", "beyond root",
                 "with joint", "joint+distance", "simulated", "spheres");
-  for (Arm arm : {Arm::FeedForward, Arm::Recurrent, Arm::RecurrentSparse}) {
+  for (Arm arm : {Arm::FeedForward, Arm::Recurrent, Arm::RecurrentSparse, Arm::RecurrentZero}) {
     RunConfig c = base;
     c.regime = arm_regime(arm);
-    if (arm == Arm::RecurrentSparse) c.neat.initial_links = InitialLinks::InputsToOutputs;
+    c.neat.initial_links = arm_initial_links(arm);
     std::cerr << "robozoo-gen0: growing " << genomes << " generation-0 genomes of " << arm_name(arm) << "\n";
     const InitialRobotShares s = initial_robot_shares(c, genomes, seed);
     const double n = static_cast<double>(s.genomes);

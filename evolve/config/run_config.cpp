@@ -135,7 +135,8 @@ FieldTable<GrowthParams> growth_table() {
       .integer("cloud_points", &GrowthParams::cloud_points, 1, 100000)
       .real("cloud_step", &GrowthParams::cloud_step, 0, 2 * M_PI, true)
       .real("bound", &GrowthParams::bound, 0, kInf, true)
-      .integer("max_spheres", &GrowthParams::max_spheres, 1, 10000);
+      .integer("max_spheres", &GrowthParams::max_spheres, 1, 10000)
+      .real("touch_tolerance", &GrowthParams::touch_tolerance, 0, 1e-3, false, true);
   return t;
 }
 

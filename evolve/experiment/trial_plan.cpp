@@ -11,6 +11,7 @@ std::string arm_name(Arm a) {
     case Arm::FeedForward: return "feedforward";
     case Arm::Recurrent: return "recurrent";
     case Arm::RecurrentSparse: return "recurrent-sparse";
+    case Arm::RecurrentZero: return "recurrent-zero";
   }
   return "unknown";
 }
@@ -18,14 +19,29 @@ std::string arm_name(Arm a) {
 Arm arm_from_name(const std::string& name) {
   for (int a = 0; a < kNumArms; ++a)
     if (arm_name(static_cast<Arm>(a)) == name) return static_cast<Arm>(a);
-  throw std::invalid_argument("unknown arm '" + name + "' (use feedforward, recurrent, recurrent-sparse)");
+  throw std::invalid_argument("unknown arm '" + name + "' (use feedforward, recurrent, recurrent-sparse, recurrent-zero)");
 }
 
 Regime arm_regime(Arm a) { return a == Arm::FeedForward ? Regime::FeedForward : Regime::Recurrent; }
 
+InitialLinks arm_initial_links(Arm a) {
+  switch (a) {
+    case Arm::RecurrentSparse: return InitialLinks::InputsToOutputs;
+    case Arm::RecurrentZero: return InitialLinks::AllAllowedRecurrentZero;
+    case Arm::FeedForward:
+    case Arm::Recurrent: break;
+  }
+  return NeatParams{}.initial_links;
+}
+
 Arm arm_of(Regime regime, InitialLinks initial_links) {
   if (regime == Regime::FeedForward) return Arm::FeedForward;
-  return initial_links == InitialLinks::InputsToOutputs ? Arm::RecurrentSparse : Arm::Recurrent;
+  switch (initial_links) {
+    case InitialLinks::InputsToOutputs: return Arm::RecurrentSparse;
+    case InitialLinks::AllAllowedRecurrentZero: return Arm::RecurrentZero;
+    case InitialLinks::AllAllowed: break;
+  }
+  return Arm::Recurrent;
 }
 
 int64_t trial_seed(Arm a, int trial) {
@@ -80,7 +96,8 @@ std::vector<std::string> evolve_arguments(const Trial& t, const ExperimentParams
   std::vector<std::string> a = {"--log", t.log_path, "--quiet", "--regime", regime_name(t.regime), "--seed",
                                 std::to_string(t.seed), "--population", std::to_string(p.population),
                                 "--generations", std::to_string(p.generations), "--run-id", t.name()};
-  if (t.arm == Arm::RecurrentSparse) a.insert(a.end(), {"--set", "neat.initial_links=inputs_to_outputs"});
+  if (arm_initial_links(t.arm) != NeatParams{}.initial_links)
+    a.insert(a.end(), {"--set", "neat.initial_links=" + initial_links_name(arm_initial_links(t.arm))});
   if (p.steps > 0) a.insert(a.end(), {"--steps", std::to_string(p.steps)});
   if (p.workers > 0) a.insert(a.end(), {"--workers", std::to_string(p.workers)});
   if (resume) a.push_back("--resume");

@@ -4,14 +4,19 @@
 // experiment is 30 trials per regime, population 150, 500 generations.
 //
 // Arms: "feedforward" (the paper's control), "recurrent" (its experimental
-// regime, fully recurrent from generation 0 by HyperNEAT's start) and
+// regime, fully recurrent from generation 0 by HyperNEAT's start),
 // "recurrent-sparse" (recurrence allowed, but the control's 99-link start:
-// it tells recurrence apart from the denser start, which the paper cannot).
+// it tells recurrence apart from the denser start, which the paper cannot) and
+// "recurrent-zero" (the recurrent start's 209 links with its 110 output ->
+// output links at weight 0: the recurrent arm's genome structure, the sparse
+// arm's behaviour at generation 0; a weight mutation turns recurrence on).
 //
 // Seeds: no two trials of an experiment share one. Trial k (1-based) of arm
-// number a (0 feedforward, 1 recurrent, 2 recurrent-sparse, whichever arms run)
-// uses seed 3 (k - 1) + a + 1: trial 1 seeds 1, 2, 3; trial 2 seeds 4, 5, 6; ...
-// so the samples of the arms are independent, as Student's unpaired t-test assumes.
+// number a (0 feedforward, 1 recurrent, 2 recurrent-sparse, 3 recurrent-zero,
+// whichever arms run) uses seed 4 (k - 1) + a + 1: trial 1 seeds 1, 2, 3, 4;
+// trial 2 seeds 5, 6, 7, 8; ... so a trial's seed does not depend on which arms
+// run, and the samples of the arms are independent, as Student's unpaired
+// t-test assumes.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,16 +26,22 @@
 namespace robozoo {
 
 /// One arm of an experiment: a regime and its generation-0 topology.
-enum class Arm : int8_t { FeedForward = 0, Recurrent = 1, RecurrentSparse = 2 };
-constexpr int kNumArms = 3;
-std::string arm_name(Arm a);                   ///< "feedforward", "recurrent", "recurrent-sparse"
+enum class Arm : int8_t { FeedForward = 0, Recurrent = 1, RecurrentSparse = 2, RecurrentZero = 3 };
+constexpr int kNumArms = 4;
+/// "feedforward", "recurrent", "recurrent-sparse", "recurrent-zero"
+std::string arm_name(Arm a);
 Arm arm_from_name(const std::string& name);    ///< throws std::invalid_argument listing the names
 Regime arm_regime(Arm a);                      ///< the regime the arm evolves in
+/// The generation-0 topology of the arm's runs: inputs_to_outputs for
+/// recurrent-sparse, all_allowed_recurrent_zero for recurrent-zero, the default
+/// (all_allowed) otherwise.
+InitialLinks arm_initial_links(Arm a);
 /// The arm a run's configuration belongs to: feedforward for the feed-forward
-/// regime; recurrent-sparse for the recurrent regime with the inputs-to-outputs
-/// start; recurrent otherwise.
+/// regime; in the recurrent regime recurrent-sparse for the inputs-to-outputs
+/// start, recurrent-zero for the all_allowed_recurrent_zero start, recurrent
+/// for all_allowed.
 Arm arm_of(Regime regime, InitialLinks initial_links);
-/// Seed of trial k (1-based) of arm a: 3 (k - 1) + a + 1.
+/// Seed of trial k (1-based) of arm a: kNumArms (k - 1) + a + 1 = 4 (k - 1) + a + 1.
 int64_t trial_seed(Arm a, int trial);
 
 struct ExperimentParams {

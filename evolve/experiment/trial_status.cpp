@@ -28,8 +28,7 @@ std::string trial_mismatch(const Checkpoint& c, const Trial& t, const Experiment
   };
   differ("regime", regime_name(saved.regime), regime_name(t.regime));
   differ("seed", std::to_string(saved.seed), std::to_string(t.seed));
-  const InitialLinks want_start =
-      t.arm == Arm::RecurrentSparse ? InitialLinks::InputsToOutputs : RunConfig{}.neat.initial_links;
+  const InitialLinks want_start = arm_initial_links(t.arm);
   differ("initial links", initial_links_name(saved.neat.initial_links), initial_links_name(want_start));
   differ("population", std::to_string(saved.neat.population), std::to_string(p.population));
   differ("generations", std::to_string(saved.generations), std::to_string(p.generations));

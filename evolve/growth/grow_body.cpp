@@ -34,7 +34,7 @@ GrownBody grow_body(CppnProbe& probe, const GrowthParams& params) {
   GrownBody body;
   body.spheres.reserve(static_cast<size_t>(max_spheres));
   body.motors.reserve(static_cast<size_t>(max_spheres));
-  Placement placement(params.bound, max_spheres);
+  Placement placement(params.bound, max_spheres, params.touch_tolerance);
   const Cloud cloud(params);
 
   // 1. The root.

@@ -24,7 +24,15 @@ struct GrowthParams {
   int cloud_points = 629;           ///< points per cloud (count), at angles k * cloud_step
   double cloud_step = 0.01;         ///< angle between cloud points (rad)
   double bound = 2.0;               ///< sphere centres must have |x|, |y| <= bound (m)
-  int max_spheres = 50;             ///< growth stops at this many spheres (count)
+  /// Growth stops at this many spheres (count). The paper sets no cap; it binds for about
+  /// half the robots that grow at all, at 50, 100 or 200 alike, so the counts of a robot at
+  /// the cap are censored (docs/method.md section 2.3 step 4, docs/performance.md).
+  int max_spheres = 50;
+  /// Relative tolerance of placement rules (b), (c), (d) (dimensionless): a distance
+  /// within touch_tolerance * limit of its limit counts as exactly at the limit, so
+  /// spheres that touch in exact geometry touch whatever the last bit of rounding says
+  /// (docs/method.md section 2.3).
+  double touch_tolerance = 1e-9;
 };
 
 /// Checks that growth can run with these parameters (positive radii with

@@ -5,7 +5,11 @@
 
 namespace robozoo {
 
-Placement::Placement(double bound, int capacity) : bound_(bound) {
+Placement::Placement(double bound, int capacity, double touch_tolerance)
+    : bound_((1.0 + touch_tolerance) * bound),
+      shrink2_((1.0 - touch_tolerance) * (1.0 - touch_tolerance)) {
+  if (!(touch_tolerance >= 0 && touch_tolerance < 1e-3))
+    throw std::invalid_argument("Placement: touch_tolerance must lie in [0, 1e-3)");
   const size_t n = capacity > 0 ? static_cast<size_t>(capacity) : 0;
   x_.reserve(n);
   y_.reserve(n);
@@ -30,7 +34,7 @@ bool Placement::admissible(const Eigen::Vector3d& p, double radius, int parent, 
   if (!(std::abs(p.x()) <= bound_ && std::abs(p.y()) <= bound_)) return false;
   const int pc = comp_[parent];
   const int grand = comp_parent_[pc];
-  const double r2 = radius * radius;
+  const double r2 = shrink2_ * (radius * radius);
   const int n = size();
   for (int q = 0; q < n; ++q) {
     const double dx = p.x() - x_[q], dy = p.y() - y_[q], dz = p.z() - z_[q];
@@ -42,7 +46,7 @@ bool Placement::admissible(const Eigen::Vector3d& p, double radius, int parent, 
     const bool exempt = jointed ? c == pc : (c == pc || c == grand || comp_parent_[c] == pc);
     if (!exempt) {
       const double reach = radius + r_[q];
-      if (d2 < reach * reach) return false;
+      if (d2 < shrink2_ * (reach * reach)) return false;
     }
   }
   return true;

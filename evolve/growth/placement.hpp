@@ -19,8 +19,16 @@
 // Rule (b): no sphere other than the parent has its centre at distance < r from p.
 // Rule (d): |p.x| <= bound and |p.y| <= bound.
 //
+// Touching is decided by the rule, not by rounding: with e = touch_tolerance
+// (relative), with d2 = dx*dx + dy*dy + dz*dz from the centres' coordinates,
+//   (b) refuses when d2 < ((1 - e) r)^2,
+//   (c) refuses when d2 < ((1 - e) (r + r_q))^2,
+//   (d) refuses when |x| or |y| > (1 + e) bound.
+// Spheres that touch in exact geometry (a chain along one cloud angle touches its
+// grandparent) carry coordinates rounded ~1e-15 m apart, far inside e = 1e-9.
+//
 // A linear scan over contiguous arrays with early exit: growth places at most
-// max_spheres (50) spheres, so a check costs at most 50 distance tests and no
+// max_spheres spheres, so a check costs at most max_spheres distance tests and no
 // allocation; a grid would not pay for itself at this size.
 #include <vector>
 
@@ -31,7 +39,8 @@ namespace robozoo {
 class Placement {
  public:
   /// `capacity` spheres are reserved (no allocation while placing up to that many).
-  Placement(double bound, int capacity);
+  /// touch_tolerance: relative tolerance of the three tests, in [0, 1e-3).
+  Placement(double bound, int capacity, double touch_tolerance);
 
   /// Places the root (component 0). Must be the first sphere.
   void add_root(const Eigen::Vector3d& center, double radius);
@@ -54,7 +63,8 @@ class Placement {
   }
 
  private:
-  double bound_;
+  double bound_;       ///< (1 + e) * bound (m)
+  double shrink2_;     ///< (1 - e)^2
   std::vector<double> x_, y_, z_, r_;
   std::vector<int> comp_;
   std::vector<int> comp_parent_;

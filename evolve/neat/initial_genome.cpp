@@ -37,8 +37,9 @@ Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& 
   for (int o = 0; o < layout.num_outputs; ++o)
     g.nodes.push_back({layout.num_inputs + o, NodeKind::Output, layout.output_activation, kOutputPosition});
   const double r = p.initial_weight_range;
-  const int sources =
-      p.initial_links == InitialLinks::AllAllowed ? layout.num_inputs + layout.num_outputs : layout.num_inputs;
+  const bool zero_recurrent = p.initial_links == InitialLinks::AllAllowedRecurrentZero;
+  const int sources = p.initial_links == InitialLinks::InputsToOutputs ? layout.num_inputs
+                                                                      : layout.num_inputs + layout.num_outputs;
   for (int from = 0; from < sources; ++from)
     for (int o = 0; o < layout.num_outputs; ++o) {
       const NodeGene& a = g.nodes[static_cast<size_t>(from)];
@@ -48,7 +49,8 @@ Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& 
       l.innovation = initial_link_innovation(layout, from, o);
       l.from = a.id;
       l.to = b.id;
-      l.weight = rng.uniform(-r, r);
+      l.weight = rng.uniform(-r, r);  // drawn in every mode, so the draws match AllAllowed's
+      if (zero_recurrent && from >= layout.num_inputs) l.weight = 0.0;
       l.enabled = true;
       l.born = 0;
       g.links.push_back(l);

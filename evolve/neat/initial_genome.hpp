@@ -33,6 +33,12 @@ bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime 
 ///   layout); in the recurrent regime also every output to every other output
 ///   (+110: 209), and to itself when p.self_loops (+11).
 /// - InputsToOutputs: every input to every output only, whichever regime.
+/// - AllAllowedRecurrentZero: AllAllowed's links, every weight drawn as AllAllowed
+///   draws it (the same genome for the same rng state), then every link out of an
+///   output (output -> output, self-loops included) set to exactly 0. In the
+///   recurrent regime: 209 links, the 110 recurrent ones at 0, so the CPPN computes
+///   what its 99 input links alone compute until a mutation moves a zero weight.
+///   In the feed-forward regime it is AllAllowed (99 links, none from an output).
 /// Throws std::invalid_argument for a layout without inputs or outputs.
 Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& p, Regime regime, Rng& rng);
 

@@ -20,7 +20,12 @@ E from_name(const std::string& s, std::initializer_list<E> all, std::string (*na
 
 std::string link_rule_name(LinkRule r) { return r == LinkRule::Positions ? "positions" : "cycle_test"; }
 std::string initial_links_name(InitialLinks r) {
-  return r == InitialLinks::AllAllowed ? "all_allowed" : "inputs_to_outputs";
+  switch (r) {
+    case InitialLinks::AllAllowed: return "all_allowed";
+    case InitialLinks::InputsToOutputs: return "inputs_to_outputs";
+    case InitialLinks::AllAllowedRecurrentZero: return "all_allowed_recurrent_zero";
+  }
+  return "unknown";
 }
 std::string add_link_rule_name(AddLinkRule r) { return r == AddLinkRule::Uniform ? "uniform" : "tries"; }
 std::string add_node_rule_name(AddNodeRule r) { return r == AddNodeRule::HyperNeat ? "hyperneat" : "classic"; }
@@ -74,8 +79,8 @@ LinkRule link_rule_from_name(const std::string& s) {
   return from_name(s, {LinkRule::Positions, LinkRule::CycleTest}, link_rule_name, "link rule");
 }
 InitialLinks initial_links_from_name(const std::string& s) {
-  return from_name(s, {InitialLinks::AllAllowed, InitialLinks::InputsToOutputs}, initial_links_name,
-                   "initial links");
+  return from_name(s, {InitialLinks::AllAllowed, InitialLinks::InputsToOutputs, InitialLinks::AllAllowedRecurrentZero},
+                   initial_links_name, "initial links");
 }
 AddLinkRule add_link_rule_from_name(const std::string& s) {
   return from_name(s, {AddLinkRule::Uniform, AddLinkRule::Tries}, add_link_rule_name, "add-link rule");

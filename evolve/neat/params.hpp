@@ -21,6 +21,9 @@ enum class LinkRule : int8_t {
 enum class InitialLinks : int8_t {
   AllAllowed = 0,       ///< HyperNEAT's createTopology: every node to every non-input node the regime allows
   InputsToOutputs = 1,  ///< classic NEAT: every input to every output only
+  /// AllAllowed's links and draws, but every link out of an output at weight 0:
+  /// the recurrent start's structure with the inputs-to-outputs start's behaviour
+  AllAllowedRecurrentZero = 2,
 };
 /// How add-link picks its new link.
 enum class AddLinkRule : int8_t {
@@ -138,7 +141,7 @@ enum class CompatibilityRule : int8_t {
 };
 
 std::string link_rule_name(LinkRule r);                  ///< "positions" / "cycle_test"
-std::string initial_links_name(InitialLinks r);          ///< "all_allowed" / "inputs_to_outputs"
+std::string initial_links_name(InitialLinks r);  ///< "all_allowed" / "inputs_to_outputs" / "all_allowed_recurrent_zero"
 std::string add_link_rule_name(AddLinkRule r);           ///< "uniform" / "tries"
 std::string add_node_rule_name(AddNodeRule r);           ///< "hyperneat" / "classic"
 std::string compatibility_rule_name(CompatibilityRule r);///< "hyperneat" / "classic"

@@ -59,11 +59,11 @@ TEST(ExperimentCli, AFinishedExperimentIsNotRedone) {
   EXPECT_EQ(extended.status, 0) << extended.output;
   EXPECT_NE(extended.output.find("2 finished (skipped), 0 to resume, 2 to start"), std::string::npos);
   EXPECT_TRUE(stamp(dir / "feedforward-s1.lcmlog") == ff);
-  EXPECT_TRUE(file_exists(dir / "recurrent-s5.lcmlog"));
+  EXPECT_TRUE(file_exists(dir / "recurrent-s6.lcmlog"));
 
   const auto status = run_shell(join(driver(dir.path, more)) + " --status");
   EXPECT_EQ(status.status, 0);
-  EXPECT_NE(status.output.find("recurrent-s5          finished         2/2"), std::string::npos) << status.output;
+  EXPECT_NE(status.output.find("recurrent-s6          finished         2/2"), std::string::npos) << status.output;
 
   // Other sizes in the same folder: refused before anything runs.
   std::vector<std::string> other = kTiny;

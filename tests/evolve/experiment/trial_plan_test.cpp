@@ -24,17 +24,66 @@ bool has(const std::vector<std::string>& v, const std::vector<std::string>& seq)
 }
 
 TEST(TrialPlan, TrialByTrialBothRegimesNeverSharingASeed) {
-  // Trial k of arm a uses seed 3 (k - 1) + a + 1: feedforward 1, 4; recurrent 2, 5.
+  // Trial k of arm a uses seed 4 (k - 1) + a + 1: feedforward 1, 5; recurrent 2, 6.
   const auto t = plan_trials(small());
   ASSERT_EQ(t.size(), 4u);
   EXPECT_EQ(t[0].name(), "feedforward-s1");
   EXPECT_EQ(t[1].name(), "recurrent-s2");
-  EXPECT_EQ(t[2].name(), "feedforward-s4");
-  EXPECT_EQ(t[3].name(), "recurrent-s5");
+  EXPECT_EQ(t[2].name(), "feedforward-s5");
+  EXPECT_EQ(t[3].name(), "recurrent-s6");
   EXPECT_EQ(t[3].number, 2);
   EXPECT_EQ(t[3].regime, Regime::Recurrent);
-  EXPECT_EQ(t[3].log_path, "/tmp/x/recurrent-s5.lcmlog");
-  EXPECT_EQ(t[3].output_path, "/tmp/x/recurrent-s5.out");
+  EXPECT_EQ(t[3].log_path, "/tmp/x/recurrent-s6.lcmlog");
+  EXPECT_EQ(t[3].output_path, "/tmp/x/recurrent-s6.out");
+}
+
+TEST(TrialPlan, FourArmsRunTrialByTrialWithSeedsFixedPerArm) {
+  ExperimentParams p = small();
+  p.trials = 30;
+  p.arms = {Arm::FeedForward, Arm::Recurrent, Arm::RecurrentSparse, Arm::RecurrentZero};
+  const auto t = plan_trials(p);
+  ASSERT_EQ(t.size(), 120u);
+  std::set<int64_t> seeds;
+  for (size_t i = 0; i < t.size(); ++i) {
+    // Trial 1 of every arm, then trial 2, ...
+    EXPECT_EQ(t[i].number, static_cast<int>(i / 4) + 1);
+    EXPECT_EQ(t[i].arm, p.arms[i % 4]);
+    EXPECT_EQ(t[i].seed, 4 * (t[i].number - 1) + static_cast<int>(i % 4) + 1);
+    EXPECT_TRUE(seeds.insert(t[i].seed).second) << "seed " << t[i].seed << " used twice";
+  }
+  // Seeds 1..120, each once.
+  EXPECT_EQ(*seeds.begin(), 1);
+  EXPECT_EQ(*seeds.rbegin(), 120);
+  EXPECT_EQ(t[3].name(), "recurrent-zero-s4");
+  EXPECT_EQ(t[7].name(), "recurrent-zero-s8");
+  EXPECT_EQ(t[3].regime, Regime::Recurrent);
+  const auto a = evolve_arguments(t[3], p, false);
+  EXPECT_TRUE(has(a, {"--set", "neat.initial_links=all_allowed_recurrent_zero"}));
+  EXPECT_TRUE(has(a, {"--regime", "recurrent"}));
+  EXPECT_TRUE(has(a, {"--seed", "4"}));
+  // Any subset, in any order: each trial keeps its seed.
+  ExperimentParams some = p;
+  some.arms = {Arm::RecurrentZero, Arm::FeedForward};
+  const auto u = plan_trials(some);
+  ASSERT_EQ(u.size(), 60u);
+  EXPECT_EQ(u[0].name(), "recurrent-zero-s4");
+  EXPECT_EQ(u[1].name(), "feedforward-s1");
+  EXPECT_EQ(u[2].name(), "recurrent-zero-s8");
+  for (const auto& x : u) EXPECT_EQ(x.seed, trial_seed(x.arm, x.number));
+  // Names, regimes, starts and the arm of a run's configuration, for every arm.
+  for (int i = 0; i < kNumArms; ++i) {
+    const Arm arm = static_cast<Arm>(i);
+    EXPECT_EQ(arm_from_name(arm_name(arm)), arm);
+    EXPECT_EQ(arm_of(arm_regime(arm), arm_initial_links(arm)), arm) << arm_name(arm);
+  }
+  EXPECT_EQ(arm_name(Arm::RecurrentZero), "recurrent-zero");
+  EXPECT_EQ(arm_regime(Arm::RecurrentZero), Regime::Recurrent);
+  EXPECT_EQ(arm_initial_links(Arm::RecurrentZero), InitialLinks::AllAllowedRecurrentZero);
+  EXPECT_EQ(arm_initial_links(Arm::RecurrentSparse), InitialLinks::InputsToOutputs);
+  EXPECT_EQ(arm_initial_links(Arm::Recurrent), InitialLinks::AllAllowed);
+  EXPECT_EQ(arm_initial_links(Arm::FeedForward), InitialLinks::AllAllowed);
+  EXPECT_EQ(arm_of(Regime::Recurrent, InitialLinks::AllAllowedRecurrentZero), Arm::RecurrentZero);
+  EXPECT_EQ(arm_of(Regime::FeedForward, InitialLinks::AllAllowedRecurrentZero), Arm::FeedForward);
 }
 
 TEST(TrialPlan, ThirdArmHasItsOwnSeedsAndTheControlsStart) {
@@ -49,13 +98,15 @@ TEST(TrialPlan, ThirdArmHasItsOwnSeedsAndTheControlsStart) {
     EXPECT_EQ(x.seed, trial_seed(x.arm, x.number));
   }
   EXPECT_EQ(*seeds.begin(), 1);
-  EXPECT_EQ(*seeds.rbegin(), 90);
+  EXPECT_EQ(*seeds.rbegin(), 4 * 29 + 3);
   EXPECT_EQ(t[2].name(), "recurrent-sparse-s3");
+  EXPECT_EQ(t[5].name(), "recurrent-sparse-s7");
   EXPECT_EQ(t[2].regime, Regime::Recurrent);
   const auto a = evolve_arguments(t[2], p, false);
   EXPECT_TRUE(has(a, {"--set", "neat.initial_links=inputs_to_outputs"}));
   EXPECT_TRUE(has(a, {"--run-id", "recurrent-sparse-s3"}));
   EXPECT_FALSE(has(evolve_arguments(t[1], p, false), {"--set", "neat.initial_links=inputs_to_outputs"}));
+  EXPECT_FALSE(has(evolve_arguments(t[1], p, false), {"--set"}));
   // The seeds of the first two arms do not depend on whether the third runs.
   ExperimentParams two = small();
   two.trials = 30;

@@ -14,6 +14,7 @@
 #include "evolve/core/rng.hpp"
 #include "evolve/cppn/random_genome.hpp"
 #include "evolve/growth/growth.hpp"
+#include "tests/evolve/growth/cppn_builders.hpp"
 
 namespace robozoo {
 namespace {
@@ -21,6 +22,7 @@ namespace {
 using CppnOutputsArray = std::array<double, 11>;
 
 using Out = CppnOutputsArray;
+
 
 class Checker {
  public:
@@ -155,18 +157,22 @@ class Checker {
   // docs/method.md's text, independently of evolve/growth/placement.cpp.
   bool admissible(const Eigen::Vector3d& x, double r, int parent, bool jointed,
                   const std::vector<int>& existing) const {
-    if (!(std::abs(x.x()) <= p_.bound && std::abs(x.y()) <= p_.bound)) return false;  // (d)
+    // Touching is decided with the relative tolerance e (docs/method.md section 2.3),
+    // written here with distances rather than squared distances.
+    const double e = p_.touch_tolerance;
+    const double edge = (1 + e) * p_.bound;
+    if (!(std::abs(x.x()) <= edge && std::abs(x.y()) <= edge)) return false;  // (d)
     const int pc = comp_[parent];
     for (int q : existing) {
       const Eigen::Vector3d d = x - c(q);
-      const double d2 = d.x() * d.x() + d.y() * d.y() + d.z() * d.z();
-      if (q != parent && d2 < r * r) return false;  // (b)
+      const double dist = std::hypot(d.x(), d.y(), d.z());
+      if (q != parent && dist < (1 - e) * r) return false;  // (b)
       const int qc = comp_[q];
       bool joined;
       if (jointed) joined = qc == pc;  // the new component is joined to the parent's only
       else joined = qc == pc || comp_parent_[qc] == pc || comp_parent_[pc] == qc;
       const double reach = r + r_.spheres[q].radius;
-      if (!joined && d2 < reach * reach) return false;  // (c)
+      if (!joined && dist < (1 - e) * reach) return false;  // (c)
     }
     return true;
   }
@@ -362,6 +368,35 @@ class Checker {
   std::vector<std::vector<int>> children_;
   std::vector<int> comp_, comp_parent_;
 };
+
+// A saturated CPPN: every output constant, m = 0.9 (every point is matter, all
+// equal, so clouds are visited in angle order), r_scale = -0.9 (every child gets
+// r_min), j = 0.9 (every child hinged). Its chains of r_min spheres along one
+// cloud angle touch their grandparents exactly, which rounding alone used to
+// decide. Growth must place every admissible point (checked independently,
+// with hypot distances): it fills max_spheres, 50 or 200. Deciding touches by
+// the last bit (touch_tolerance 0) refuses some exact touches and stops at 29.
+TEST(GrowInvariants, SaturatedCppnGrowsEveryTouchingSphere) {
+  Genome g = testing::bare_robot_genome();
+  testing::constant(g, kOutMatter, 0.9);
+  testing::constant(g, kOutRadius, -0.9);
+  testing::constant(g, kOutJoint, 0.9);
+  for (int cap : {50, 200}) {
+    SCOPED_TRACE("max_spheres " + std::to_string(cap));
+    GrowthParams p;
+    p.max_spheres = cap;
+    Network net(g, robot_layout());
+    const Robot robot = grow(net, p);
+    Checker(net, robot, p, /*check_maximal=*/true).run();
+    const int n = static_cast<int>(robot.spheres.size());
+    GrowthParams exact = p;
+    exact.touch_tolerance = 0;
+    const int n_exact = static_cast<int>(grow(net, exact).spheres.size());
+    std::printf("saturated CPPN, max_spheres %d: %d spheres (%d with touch_tolerance 0)\n", cap, n, n_exact);
+    EXPECT_EQ(n, cap);
+    EXPECT_EQ(n_exact, 29);
+  }
+}
 
 TEST(GrowInvariants, HoldForRandomCppnsOfBothRegimes) {
   const GrowthParams p;

@@ -21,6 +21,7 @@ TEST(GrowthParams, DefaultsAreThePapersAndValid) {
   EXPECT_EQ(p.cloud_points, 629);
   EXPECT_EQ(p.cloud_step, 0.01);
   EXPECT_EQ(p.bound, 2.0);
+  EXPECT_EQ(p.touch_tolerance, 1e-9);
 }
 
 TEST(GrowthParams, EachBadValueIsRejected) {
@@ -41,6 +42,9 @@ TEST(GrowthParams, EachBadValueIsRejected) {
       [](GrowthParams& p) { p.bound = -1; },
       [](GrowthParams& p) { p.max_spheres = 0; },
       [](GrowthParams& p) { p.bias_input = NAN; },
+      [](GrowthParams& p) { p.touch_tolerance = -1e-12; },
+      [](GrowthParams& p) { p.touch_tolerance = 1e-3; },
+      [](GrowthParams& p) { p.touch_tolerance = NAN; },
   };
   for (size_t i = 0; i < bad.size(); ++i) {
     GrowthParams p;

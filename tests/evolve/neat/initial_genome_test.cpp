@@ -5,6 +5,9 @@
 #include "tests/evolve/neat/classic_params.hpp"
 
 #include <set>
+#include <vector>
+
+#include "evolve/cppn/network.hpp"
 
 namespace robozoo {
 namespace {
@@ -90,6 +93,81 @@ TEST(InitialGenome, HyperNeatStartLinksEverythingTheRegimeAllows) {
   // The third arm's start: recurrence allowed, the control's 99 links.
   p.initial_links = InitialLinks::InputsToOutputs;
   EXPECT_EQ(initial_genome(layout, 4, p, Regime::Recurrent, rng).links.size(), 99u);
+}
+
+// The fourth arm's start: the recurrent start's 209 links and weight draws, the
+// 110 output -> output links at exactly 0.
+TEST(InitialGenome, RecurrentZeroStartIsTheRecurrentStartWithSilentRecurrentLinks) {
+  const GenomeLayout layout = robot_layout();
+  NeatParams full, zero, sparse;
+  zero.initial_links = InitialLinks::AllAllowedRecurrentZero;
+  sparse.initial_links = InitialLinks::InputsToOutputs;
+  EXPECT_EQ(initial_links_name(zero.initial_links), "all_allowed_recurrent_zero");
+  EXPECT_EQ(initial_links_from_name("all_allowed_recurrent_zero"), InitialLinks::AllAllowedRecurrentZero);
+  Rng rng_full(42), rng_zero(42);
+  for (int id = 0; id < 20; ++id) {
+    const Genome f = initial_genome(layout, id, full, Regime::Recurrent, rng_full);
+    const Genome z = initial_genome(layout, id, zero, Regime::Recurrent, rng_zero);
+    validate_genome(z, layout);
+    ASSERT_EQ(z.links.size(), 209u);
+    ASSERT_EQ(f.links.size(), 209u);
+    EXPECT_EQ(count_recurrent_links(z), 110);
+    EXPECT_TRUE(has_cycle(z));
+    int zeros = 0, drawn = 0;
+    for (size_t k = 0; k < z.links.size(); ++k) {
+      const LinkGene &a = f.links[k], &b = z.links[k];
+      EXPECT_EQ(a.innovation, b.innovation);
+      EXPECT_EQ(a.from, b.from);
+      EXPECT_EQ(a.to, b.to);
+      EXPECT_TRUE(b.enabled);
+      EXPECT_EQ(b.born, 0);
+      if (b.from >= layout.num_inputs) {
+        EXPECT_EQ(b.weight, 0.0) << "link " << b.from << " -> " << b.to;
+        EXPECT_NE(a.weight, 0.0);
+        ++zeros;
+      } else {
+        EXPECT_EQ(b.weight, a.weight) << "the same draw as the recurrent start's";
+        ++drawn;
+      }
+    }
+    EXPECT_EQ(zeros, 110);
+    EXPECT_EQ(drawn, 99);
+  }
+  // Both streams made the same draws: the next number agrees.
+  EXPECT_EQ(rng_full.uniform(0, 1), rng_zero.uniform(0, 1));
+
+  // Behaviour: the same outputs, bit for bit, as the genome without its 110
+  // silent links (the 99-link start with these weights), although the network is
+  // recurrent and takes its synchronous updates.
+  Rng rng(7);
+  const Genome z = initial_genome(layout, 0, zero, Regime::Recurrent, rng);
+  Genome s = z;
+  s.links.resize(99);
+  for (const auto& l : s.links) ASSERT_LT(l.from, layout.num_inputs);
+  Network nz(z, layout), ns(s, layout);
+  Rng in_rng(9);
+  for (int q = 0; q < 200; ++q) {
+    std::vector<double> in(static_cast<size_t>(layout.num_inputs));
+    for (auto& v : in) v = in_rng.uniform(-2, 2);
+    in[static_cast<size_t>(layout.bias_input)] = 1.0;
+    const std::vector<double> a = nz.query(in), b = ns.query(in);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t o = 0; o < a.size(); ++o) ASSERT_EQ(a[o], b[o]) << "query " << q << ", output " << o;
+  }
+  // Self-loops, when allowed, come from an output too: 220 links, 121 at 0.
+  zero.self_loops = true;
+  const Genome zs = initial_genome(layout, 1, zero, Regime::Recurrent, rng);
+  EXPECT_EQ(zs.links.size(), 220u);
+  int zs_zeros = 0;
+  for (const auto& l : zs.links) zs_zeros += l.weight == 0.0;
+  EXPECT_EQ(zs_zeros, 121);
+  // In the feed-forward regime no link leaves an output: it is the 99-link start.
+  Rng a(3), b(3);
+  zero.self_loops = false;
+  const Genome zf = initial_genome(layout, 0, zero, Regime::FeedForward, a);
+  const Genome ff = initial_genome(layout, 0, full, Regime::FeedForward, b);
+  ASSERT_EQ(zf.links.size(), 99u);
+  for (size_t k = 0; k < zf.links.size(); ++k) EXPECT_EQ(zf.links[k].weight, ff.links[k].weight);
 }
 
 TEST(InitialGenome, WeightsCoverTheirRange) {

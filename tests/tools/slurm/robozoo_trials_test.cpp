@@ -24,9 +24,9 @@ TEST(RobozooTrials, ArrayTasksMapToRegimeAndSeed) {
   TempDir dir;
   const std::string env = "ROBOZOO_DRY_RUN=1 ROBOZOO_RUNS=" + dir.path;
   const std::vector<std::pair<int, std::string>> cases = {{0, "feedforward-s1"},
-                                                          {29, "feedforward-s88"},
+                                                          {29, "feedforward-s117"},
                                                           {30, "recurrent-s2"},
-                                                          {59, "recurrent-s89"}};
+                                                          {59, "recurrent-s118"}};
   for (const auto& [task, run] : cases) {
     const Outcome o = trial(env + " SLURM_ARRAY_TASK_ID=" + std::to_string(task), "--preset short");
     EXPECT_EQ(o.status, 0) << o.output;
@@ -38,7 +38,7 @@ TEST(RobozooTrials, ArrayTasksMapToRegimeAndSeed) {
     EXPECT_EQ(o.output.find("--resume"), std::string::npos) << o.output;
   }
   const Outcome few = trial(env + " ROBOZOO_SEEDS=2 SLURM_ARRAY_TASK_ID=3");
-  EXPECT_NE(few.output.find("recurrent-s5.lcmlog"), std::string::npos) << few.output;  // trial 2: 3 + 1 + 1
+  EXPECT_NE(few.output.find("recurrent-s6.lcmlog"), std::string::npos) << few.output;  // trial 2: 4 + 1 + 1
   const Outcome outside = trial(env + " SLURM_ARRAY_TASK_ID=60");
   EXPECT_EQ(outside.status, 2);
   EXPECT_NE(outside.output.find("outside 0-59"), std::string::npos) << outside.output;
