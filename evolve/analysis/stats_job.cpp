@@ -129,8 +129,9 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   std::vector<std::string> logs = list_logs(o.log_dir);
   const bool from_results = logs.empty();
   if (from_results) logs = list_results(o.log_dir);
-  if (logs.empty()) throw std::invalid_argument("no *.lcmlog or *" + std::string(kRunResultsExtension) + " in " +
-                                                o.log_dir);
+  if (logs.empty())
+    throw std::invalid_argument("no *.lcmlog in " + o.log_dir + " (nor compact results, *" +
+                                std::string(kRunResultsExtension) + ")");
 
   std::vector<RunAnalysis> runs;
   std::map<std::string, std::vector<std::string>> per_regime_logs;

@@ -74,7 +74,7 @@ TEST(StatsResultsCli, AFolderWithoutLogsOrResultsIsAnError) {
   TempDir d;
   const auto r = run_shell(bin("robozoo-stats") + " '" + d.path + "' --no-plots --no-zoo");
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("no *.lcmlog or *.results.json in"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(nor compact results, *.results.json)"), std::string::npos) << r.output;
   std::ofstream(d / "x.results.json") << "{\"format\": \"robozoo-run-results\", \"version\": 1}";
   const auto bad = run_shell(bin("robozoo-stats") + " '" + d.path + "' --no-plots --no-zoo");
   EXPECT_EQ(bad.status, 2) << bad.output;
