@@ -174,6 +174,10 @@ int main(int argc, char** argv) {
   app.add_option("--progress-interval", progress_interval, "seconds between progress lines (at most one per generation)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--status", status_only, "print where each trial stands and exit");
+  bool force = false;
+  app.add_flag("--force", force,
+               "resume or extend trials whose checkpoints another robozoo version wrote (robozoo-evolve --resume "
+               "--force: that version may grow, simulate or breed differently)");
   app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
   {
@@ -288,7 +292,8 @@ int main(int argc, char** argv) {
                                " (to " + std::to_string(p.generations) + ")"
                          : std::string("starting"))
               << " (log " << t.log_path << ")" << std::endl;
-    const std::vector<std::string> args = trial_command(t, e.params, evolve, resume);
+    std::vector<std::string> args = trial_command(t, e.params, evolve, resume);
+    if (resume && force) args.push_back("--force");
     if (p.mpi_ranks > 0) {
       std::cerr << " ";
       for (const auto& a : args) std::cerr << " " << a;
