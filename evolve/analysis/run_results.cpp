@@ -202,7 +202,7 @@ json run_results_to_json(const RunResults& res) {
   run["steps"] = s.steps;
   run["dt"] = num(s.dt);
   const json config = json::parse(s.config_json, nullptr, false);
-  run["config"] = config.is_discarded() ? json(s.config_json) : config;
+  run["config"] = config.is_object() ? config : json(s.config_json);  // text that is no JSON object stays text
   j["run"] = std::move(run);
   j["max_d"] = num(s.max_d);
   j["undecodable"] = s.undecodable;
