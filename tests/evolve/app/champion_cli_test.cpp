@@ -1,8 +1,8 @@
 // robozoo-evolve champion: a compact result's best-of-run champion becomes a
 // log that robozoo-replay check proves (morphology, pose stream, fitness
-// against this build), holding the same genome, morphology and pose stream as
-// the run's own log; a result whose fitness this build does not reproduce is
-// refused.
+// against this build) and robozoo-render films, holding the same genome,
+// morphology and pose stream as the run's own log; a result whose fitness this
+// build does not reproduce is refused.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -73,6 +73,12 @@ TEST(ChampionCli, ACompactResultsChampionBecomesALogThatReplayCheckProves) {
   // robozoo-replay check proves the log: structure, morphology, poses, fitness.
   const auto check = run_shell(bin("robozoo-replay") + " check '" + (dir / "champion.lcmlog") + "' --no-progress");
   EXPECT_EQ(check.status, 0) << check.output;
+
+  // robozoo-render films it: an MP4 of its pose stream (5 simulated seconds per second, 10 frames per second).
+  const auto film = run_shell(bin("robozoo-render") + " video '" + (dir / "champion.lcmlog") + "' -o '" +
+                              (dir / "champion.mp4") + "' -q --size 160x120 --fps 10 --speed 5 --samples 0");
+  EXPECT_EQ(film.status, 0) << film.output;
+  EXPECT_GT(read_file(dir / "champion.mp4").size(), 1000u);
 
   // A committed fitness this build does not give: refused, nothing claimed.
   nlohmann::json j = run_results_to_json(r);
