@@ -18,6 +18,7 @@
 
 #include <toml++/toml.h>
 
+#include "evolve/analysis/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
@@ -161,6 +162,13 @@ int main(int argc, char** argv) {
         write_file(out / "config_json" / "run_t.json", m.config_json);
       }
     }
+    // The run's compact result, its best genome cut to 5 link genes (the whole one is 20 kB).
+    nlohmann::json results = run_results_to_json(results_from_log(argv[1]));
+    if (results["best"].is_object()) {
+      auto& links = results["best"]["genome"]["links"];
+      links.erase(links.begin() + std::min<size_t>(5, links.size()), links.end());
+    }
+    write_file(out / "run_results" / "run.results.json", results.dump() + "\n");
     write_bytes(out / "event_log" / "head.lcmlog", log_bytes(head));
     write_bytes(out / "event_log" / "first.lcmlog", log_bytes({head.front()}));
     const std::string config = read_file(argv[3]);

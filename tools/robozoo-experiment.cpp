@@ -3,8 +3,10 @@
 // trial in --out, one trial after the other, each locally (--workers) or as an
 // MPI job (--mpi N: mpirun -np N robozoo-evolve --mpi). It can be stopped (Ctrl-C, SIGTERM)
 // and started again at any time: finished trials are skipped, a stopped one is
-// resumed from its checkpoint, the others are started. Prints progress across
-// the whole experiment with an estimated finish time. Then: robozoo-stats DIR.
+// resumed from its checkpoint, the others are started; --generations above the
+// trials' own extends them from their checkpoints. Each finished trial leaves its
+// compact result (evolve/analysis/run_results.hpp) in --results. Prints progress
+// across the whole experiment with an estimated finish time. Then: robozoo-stats DIR.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -17,6 +19,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "evolve/analysis/run_results.hpp"
 #include "evolve/config/run_config.hpp"
 #include "evolve/experiment/child_process.hpp"
 #include "evolve/experiment/program_path.hpp"
@@ -79,6 +82,34 @@ std::string last_lines(const std::string& path, size_t n) {
   return out;
 }
 
+std::string results_path(const std::string& dir, const Trial& t) {
+  return dir + "/" + t.name() + kRunResultsExtension;
+}
+
+/// Writes the compact result of the finished trial `t` when `path` lacks it or
+/// holds an older end; says so. Returns false (with the reason) on failure.
+bool write_trial_results(const Trial& t, const std::string& path, int generations, bool force) {
+  try {
+    if (!force && std::filesystem::exists(path)) {
+      const RunResults old = read_run_results(path);
+      if (old.run.complete() && old.run.generations_requested == generations) return true;
+    }
+    const RunResults r = results_from_log(t.log_path);
+    if (!r.run.complete()) {
+      std::cerr << "robozoo-experiment: " << t.log_path << " lacks generations (" << r.run.generations.size()
+                << " of " << r.run.generations_requested << "): no compact result written\n";
+      return false;
+    }
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    write_run_results(path, r);
+    std::cerr << "  compact result " << path << " (" << std::filesystem::file_size(path) << " bytes)" << std::endl;
+    return true;
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: cannot write the compact result of " << t.name() << ": " << ex.what() << "\n";
+    return false;
+  }
+}
+
 void print_status(const Experiment& e) {
   std::cout << "trial                 state        generations  time\n";
   for (size_t i = 0; i < e.trials.size(); ++i) {
@@ -104,13 +135,19 @@ int main(int argc, char** argv) {
       "(<arm>-s<seed>.lcmlog). No two trials share a seed: trial k of arm a (0 feedforward, 1 recurrent,\n"
       "2 recurrent-sparse, 3 recurrent-zero) uses seed 4(k-1)+a+1. Stop it at any time (Ctrl-C)\n"
       "and run the same command again: finished trials are skipped, a stopped one is resumed, the others\n"
-      "are started. The paper's sizes are the defaults (30 trials, population 150, 500 generations).\n"
-      "Afterwards: robozoo-stats DIR."};
+      "are started. Run it again with more --generations (and any --arms) to extend finished trials from\n"
+      "their checkpoints. Each finished trial leaves a compact result (<trial>.results.json, a few kB, to\n"
+      "commit) in --results. The paper's sizes are the defaults (30 trials, population 150, 500\n"
+      "generations). Afterwards: robozoo-stats DIR (or robozoo-stats RESULTS_DIR)."};
   ExperimentParams p;
   std::string evolve;
   bool status_only = false;
   double progress_interval = 5.0;
   app.add_option("--out", p.out_dir, "folder of the experiment's logs (created if missing)")->required();
+  std::string results_dir;
+  app.add_option("--results", results_dir,
+                 "folder of the trials' compact results (default: OUT/results); a trial whose log and checkpoint "
+                 "are not in --out but whose result here reached --generations is done");
   app.add_option("--trials", p.trials, "trials per arm (paper: 30)")->check(CLI::Range(1, 100000));
   std::vector<std::string> arm_names = {"feedforward", "recurrent"};
   app.add_option("--arms", arm_names,
@@ -139,6 +176,10 @@ int main(int argc, char** argv) {
   app.add_option("--progress-interval", progress_interval, "seconds between progress lines (at most one per generation)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--status", status_only, "print where each trial stands and exit");
+  bool force = false;
+  app.add_flag("--force", force,
+               "resume or extend trials whose checkpoints another robozoo version wrote (robozoo-evolve --resume "
+               "--force: that version may grow, simulate or breed differently)");
   app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
   {
@@ -153,11 +194,32 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (results_dir.empty()) results_dir = p.out_dir + "/results";
   Experiment e;
   e.params = p;
+  std::vector<bool> from_results;  // done according to its compact result alone (no log here)
   try {
     e.trials = plan_trials(p);
-    for (const auto& t : e.trials) e.status.push_back(trial_status(t, p));
+    for (const auto& t : e.trials) {
+      e.status.push_back(trial_status(t, p));
+      from_results.push_back(false);
+      const std::string rp = results_path(results_dir, t);
+      if (e.status.back().state != TrialState::NotStarted || !std::filesystem::exists(rp)) continue;
+      // No log, no checkpoint, but a compact result (e.g. an experiment continued on another machine).
+      const RunResults r = read_run_results(rp);
+      if (r.run.run_id != t.name() || r.run.population != p.population)
+        throw std::invalid_argument(rp + " is the result of run " + r.run.run_id + " with population " +
+                                    std::to_string(r.run.population) + ", not of trial " + t.name() +
+                                    " with population " + std::to_string(p.population));
+      if (!r.run.complete() || r.run.generations_requested < p.generations)
+        throw std::invalid_argument(rp + " holds " + t.name() + " at " + std::to_string(r.run.generations.size()) +
+                                    " generations, but its log and checkpoint are not in " + p.out_dir +
+                                    ": it cannot be extended to " + std::to_string(p.generations) +
+                                    " (copy <trial>.lcmlog and its .checkpoint there)");
+      e.status.back().state = TrialState::Finished;
+      e.status.back().generations_done = p.generations;
+      from_results.back() = true;
+    }
   } catch (const std::exception& ex) {
     std::cerr << "robozoo-experiment: " << ex.what() << "\n";
     return 2;
@@ -208,16 +270,32 @@ int main(int argc, char** argv) {
             << "\n  " << finished << " finished (skipped), " << partial << " to resume, "
             << e.trials.size() - static_cast<size_t>(finished + partial) << " to start" << std::endl;
 
+  // Trials finished before (or before compact results existed) get theirs now.
+  bool results_ok = true;
+  for (size_t i = 0; i < e.trials.size(); ++i) {
+    if (e.status[i].state != TrialState::Finished || from_results[i]) continue;
+    int planned = 0;
+    try {
+      planned = read_checkpoint(e.trials[i].log_path + ".checkpoint").config.value("generations", 0);
+    } catch (const std::exception& ex) {
+      std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+      return 2;
+    }
+    results_ok &= write_trial_results(e.trials[i], results_path(results_dir, e.trials[i]), planned, false);
+  }
+
   SignalBlock block;
   for (size_t i = 0; i < e.trials.size(); ++i) {
     const Trial& t = e.trials[i];
     if (e.status[i].state == TrialState::Finished) continue;
     const bool resume = e.status[i].state == TrialState::Partial;
     std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": "
-              << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done)
+              << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done) +
+                               " (to " + std::to_string(p.generations) + ")"
                          : std::string("starting"))
               << " (log " << t.log_path << ")" << std::endl;
-    const std::vector<std::string> args = trial_command(t, e.params, evolve, resume);
+    std::vector<std::string> args = trial_command(t, e.params, evolve, resume);
+    if (resume && force) args.push_back("--force");
     if (p.mpi_ranks > 0) {
       std::cerr << " ";
       for (const auto& a : args) std::cerr << " " << a;
@@ -268,6 +346,7 @@ int main(int argc, char** argv) {
         }
         std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": finished ("
                   << format_duration(e.status[i].elapsed_seconds) << ")\n  " << progress_line(e, i) << std::endl;
+        results_ok &= write_trial_results(t, results_path(results_dir, t), p.generations, true);
         break;
       }
       // Timeout: look at the checkpoint when it changed.
@@ -290,6 +369,7 @@ int main(int argc, char** argv) {
     }
   }
   std::cerr << "robozoo-experiment: all " << e.trials.size() << " trials finished (robozoo-evolve time "
-            << format_duration(e.totals().seconds_spent) << "). Next: robozoo-stats " << p.out_dir << std::endl;
-  return 0;
+            << format_duration(e.totals().seconds_spent) << "), compact results in " << results_dir
+            << ". Next: robozoo-stats " << p.out_dir << std::endl;
+  return results_ok ? 0 : 1;
 }

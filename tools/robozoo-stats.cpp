@@ -22,10 +22,16 @@ int main(int argc, char** argv) {
       "as the paper does (Figures 1-3, new champions of section 4): the primary test (best-so-far fitness at the\n"
       "last generation, Student's t at --alpha), the secondary tests under Holm's correction, Welch's t, Cohen's d\n"
       "with its 95 % CI and the power at the paper's effect; write CSV tables, gnuplot PNGs, zoo sheets and\n"
-      "report.md into --out (default DIR/stats)."};
+      "report.md into --out (default DIR/stats). A DIR without logs is read as a folder of compact results\n"
+      "(*.results.json, robozoo-experiment's results/ folder): the same report, without zoo sheets.\n"
+      "--export-results OUT writes the compact results of DIR's logs into OUT instead of a report."};
   StatsOptions o;
   bool no_plots = false, no_zoo = false;
-  app.add_option("DIR", o.log_dir, "folder of the runs' logs")->required();
+  app.add_option("DIR", o.log_dir, "folder of the runs' logs, or of their compact results")->required();
+  std::string export_dir;
+  app.add_option("--export-results", export_dir,
+                 "write one compact result (<log name>.results.json) per finished log of DIR into this folder "
+                 "(with --include-unfinished: every log), and no report");
   app.add_option("--out,-o", o.out_dir, "output folder (default: DIR/stats)");
   app.add_flag("--include-unfinished", o.include_unfinished,
                "also use runs that did not reach their last generation (default: left out, and listed)");
@@ -69,6 +75,22 @@ int main(int argc, char** argv) {
   o.plots = !no_plots;
   o.zoo = !no_zoo;
   o.analysis.changes.simulated_only = !all_changes;
+  if (!export_dir.empty()) {
+    try {
+      std::vector<std::string> skipped;
+      const auto written = export_results(o.log_dir, export_dir, o.include_unfinished, std::cerr, skipped);
+      std::cerr << "robozoo-stats: wrote " << written.size() << " compact results into " << export_dir;
+      if (!skipped.empty()) std::cerr << "; " << skipped.size() << " logs left out";
+      std::cerr << "\n";
+      return written.empty() ? 1 : 0;
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "robozoo-stats: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "robozoo-stats: " << e.what() << "\n";
+      return 1;
+    }
+  }
   try {
     std::cerr << "robozoo-stats: reading " << o.log_dir << "\n";
     const StatsOutcome r = run_stats(o, std::cerr);

@@ -19,6 +19,23 @@ bool RunSummary::complete() const {
   return true;
 }
 
+void apply_run_configuration(RunSummary& s) {
+  s.arm = s.regime == 0 ? "feedforward" : "recurrent";
+  s.max_spheres = 0;
+  s.target_distance = 0;
+  try {
+    const RunConfig c = config_from_json(nlohmann::json::parse(s.config_json));
+    // run_t's regime is authoritative; the start topology comes from the configuration.
+    s.arm = arm_name(arm_of(s.regime == 0 ? Regime::FeedForward : Regime::Recurrent, c.neat.initial_links));
+    s.max_spheres = c.eval.growth.max_spheres;
+    const auto& sim = c.eval.sim;
+    s.target_distance = std::sqrt(sim.target_x * sim.target_x + sim.target_y * sim.target_y +
+                                  sim.target_z * sim.target_z);
+  } catch (const std::exception&) {
+    // A configuration this robozoo cannot read: the arm from the regime alone.
+  }
+}
+
 RunSummary summarize_run(const LogContents& log, const std::string& path) {
   RunSummary s;
   s.path = path;
@@ -43,17 +60,8 @@ RunSummary summarize_run(const LogContents& log, const std::string& path) {
       s.population = m.population;
       s.generations_requested = m.generations;
       s.steps = m.steps;
-      try {
-        const RunConfig c = config_from_json(nlohmann::json::parse(m.config_json));
-        // run_t's regime is authoritative; the start topology comes from the configuration.
-        s.arm = arm_name(arm_of(m.regime == 0 ? Regime::FeedForward : Regime::Recurrent, c.neat.initial_links));
-        s.max_spheres = c.eval.growth.max_spheres;
-        const auto& sim = c.eval.sim;
-        s.target_distance = std::sqrt(sim.target_x * sim.target_x + sim.target_y * sim.target_y +
-                                      sim.target_z * sim.target_z);
-      } catch (const std::exception&) {
-        s.arm = m.regime == 0 ? "feedforward" : "recurrent";  // a configuration this robozoo cannot read
-      }
+      s.dt = m.dt;
+      s.config_json = m.config_json;
     } else if (r.channel == kChannelGeneration) {
       generation_t m;
       if (!safe_decode(r.data.data(), r.data.size(), m)) {
@@ -65,13 +73,18 @@ RunSummary summarize_run(const LogContents& log, const std::string& path) {
       g.best_fitness = m.best_fitness;
       g.mean_fitness = m.mean_fitness;
       g.best_so_far_fitness = m.best_so_far_fitness;
+      g.stderr_fitness = m.stderr_fitness;
+      g.evaluations = m.evaluations;
       g.champion_id = m.champion_id;
+      g.num_species = m.num_species;
+      g.compatibility_threshold = m.compatibility_threshold;
       g.outcomes = {m.n_not_simulated, m.n_completed,       m.n_stopped_early,
                     m.n_accel_fault,   m.n_rolling_contact, m.n_rolling_spin};
       gens[m.generation] = g;  // the last record of a generation wins
     }
   }
   if (!have_run) throw std::invalid_argument(path + ": no decodable ROBOZOO_RUN message (not a robozoo log?)");
+  apply_run_configuration(s);
   for (const auto& [gen, g] : gens) s.generations.push_back(g);
 
   // Second pass: the champions' genomes and morphologies, and the pose streams.

@@ -21,7 +21,11 @@ struct GenerationRecord {
   double best_fitness = 0;           ///< fitness units
   double mean_fitness = 0;           ///< fitness units
   double best_so_far_fitness = 0;    ///< fitness units
+  double stderr_fitness = 0;         ///< standard error of the mean fitness (fitness units)
+  int64_t evaluations = 0;           ///< cumulative evaluations since the start of the run (count)
   int64_t champion_id = -1;          ///< genome id of the generation's champion
+  int32_t num_species = 0;           ///< species after speciation (count)
+  double compatibility_threshold = 0;  ///< NEAT compatibility threshold in force (distance units)
   /// Outcome counts of the generation (generation_t), in the outcome order:
   /// not simulated, completed, stopped early, acceleration fault, rolling by
   /// contact, rolling by spin (count).
@@ -48,6 +52,8 @@ struct RunSummary {
   int32_t population = 0;             ///< genomes per generation (count)
   int32_t generations_requested = 0;  ///< generations the run was started for (count)
   int32_t steps = 0;                  ///< physics steps per evaluation (count)
+  double dt = 0;                      ///< physics step (s)
+  std::string config_json;            ///< the resolved configuration of its last run_t (JSON text)
   std::vector<GenerationRecord> generations;  ///< in generation order, one per logged generation
   std::vector<ChampionRecord> champions;      ///< in generation order, one per generation whose champion was logged
   /// Per genome id with a logged pose stream: the lowest centre height of each sphere over the stream (m).
@@ -58,6 +64,11 @@ struct RunSummary {
   /// Every requested generation is in the log, 0 to generations_requested - 1.
   bool complete() const;
 };
+
+/// Sets what `s` derives from its run_t fields and configuration text: arm,
+/// max_spheres, target_distance (a configuration this robozoo cannot read
+/// leaves the arm to the regime alone and the other two 0).
+void apply_run_configuration(RunSummary& s);
 
 /// Summarises a log already read. Throws std::invalid_argument naming `path`
 /// when it holds no decodable ROBOZOO_RUN, or runs with different ids.

@@ -17,7 +17,6 @@
 #include "evolve/analysis/run_program.hpp"
 #include "evolve/experiment/program_path.hpp"
 #include "evolve/experiment/progress_estimate.hpp"
-#include "evolve/run/checkpoint.hpp"
 
 namespace fs = std::filesystem;
 
@@ -55,13 +54,60 @@ bool natural_less(const std::string& a, const std::string& b) {
 
 }  // namespace
 
-std::vector<std::string> list_logs(const std::string& dir) {
+namespace {
+
+std::vector<std::string> list_ending(const std::string& dir, const std::string& ending) {
   if (!fs::is_directory(dir)) throw std::invalid_argument(dir + " is not a folder");
   std::vector<std::string> out;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.is_regular_file() && e.path().extension() == ".lcmlog") out.push_back(e.path().string());
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_regular_file() && name.size() > ending.size() &&
+        name.compare(name.size() - ending.size(), ending.size(), ending) == 0)
+      out.push_back(e.path().string());
+  }
   std::sort(out.begin(), out.end(), natural_less);
   return out;
+}
+
+}  // namespace
+
+std::vector<std::string> list_logs(const std::string& dir) { return list_ending(dir, ".lcmlog"); }
+
+std::vector<std::string> list_results(const std::string& dir) { return list_ending(dir, kRunResultsExtension); }
+
+std::vector<std::string> export_results(const std::string& log_dir, const std::string& out_dir,
+                                        bool include_unfinished, std::ostream& progress,
+                                        std::vector<std::string>& skipped) {
+  const std::vector<std::string> logs = list_logs(log_dir);
+  if (logs.empty()) throw std::invalid_argument("no *.lcmlog in " + log_dir);
+  fs::create_directories(out_dir);
+  std::vector<std::string> written;
+  for (const auto& path : logs) {
+    const std::string name = fs::path(path).filename().string();
+    RunResults r;
+    try {
+      r = results_from_log(path);
+    } catch (const std::exception& e) {
+      skipped.push_back(name + ": " + e.what());
+      progress << "  " << name << ": skipped: " << e.what() << "\n";
+      continue;
+    }
+    if (!r.run.complete() && !include_unfinished) {
+      skipped.push_back(name + ": unfinished (" + std::to_string(r.run.generations.size()) + " of " +
+                        std::to_string(r.run.generations_requested) + " generations)");
+      progress << "  " << name << ": unfinished, skipped\n";
+      continue;
+    }
+    const std::string out = (fs::path(out_dir) / results_file_name(path)).string();
+    write_run_results(out, r);
+    progress << "  " << name << " -> " << out << " (" << fs::file_size(out) << " bytes)\n";
+    written.push_back(out);
+  }
+  return written;
+}
+
+std::string results_file_name(const std::string& log_path) {
+  return fs::path(log_path).stem().string() + kRunResultsExtension;
 }
 
 namespace {
@@ -79,8 +125,14 @@ void write_text(const std::string& path, const std::string& text) {
 StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   StatsOutcome out;
   out.out_dir = o.out_dir.empty() ? (fs::path(o.log_dir) / "stats").string() : o.out_dir;
-  const std::vector<std::string> logs = list_logs(o.log_dir);
-  if (logs.empty()) throw std::invalid_argument("no *.lcmlog in " + o.log_dir);
+  // A folder of logs, or else a folder of compact results (robozoo-experiment's
+  // results/, or robozoo-stats --export-results): both read through compact_summary.
+  std::vector<std::string> logs = list_logs(o.log_dir);
+  const bool from_results = logs.empty();
+  if (from_results) logs = list_results(o.log_dir);
+  if (logs.empty())
+    throw std::invalid_argument("no *.lcmlog in " + o.log_dir + " (nor compact results, *" +
+                                std::string(kRunResultsExtension) + ")");
 
   std::vector<RunAnalysis> runs;
   std::map<std::string, std::vector<std::string>> per_regime_logs;
@@ -90,8 +142,10 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   for (const auto& path : logs) {
     const std::string name = fs::path(path).filename().string();
     RunAnalysis a;
+    RunResults results;
     try {
-      const RunSummary s = summarize_run_file(path);
+      results = from_results ? read_run_results(path) : results_from_log(path);
+      const RunSummary& s = results.run;
       if (!s.complete() && !o.include_unfinished) {
         out.skipped.push_back(name + ": unfinished (" + std::to_string(s.generations.size()) + " of " +
                               std::to_string(s.generations_requested) + " generations)");
@@ -108,14 +162,10 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
              << a.best_so_far.size() << " generations, best " << (a.best_so_far.empty() ? 0.0 : a.best_so_far.back())
              << "\n";
     sizes.insert({a.population, a.generations_requested, a.steps});
-    per_regime_logs[a.arm].push_back(path);
-    try {
-      if (fs::exists(path + ".checkpoint")) {
-        evolve_seconds += read_checkpoint(path + ".checkpoint").elapsed_seconds;
-        ++with_checkpoint;
-      }
-    } catch (const std::exception&) {
-      // The time is informative only.
+    if (!from_results) per_regime_logs[a.arm].push_back(path);
+    if (results.has_evolve_seconds) {
+      evolve_seconds += results.evolve_seconds;
+      ++with_checkpoint;
     }
     runs.push_back(std::move(a));
   }
@@ -247,6 +297,9 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     const auto& regime_logs = per_regime_logs[arm];
     if (!o.zoo) {
       z.note = "not made (--no-zoo)";
+    } else if (from_results) {
+      z.note = "not made: the folder holds compact results, and robozoo-render draws robots from logs "
+               "(robozoo-evolve champion RESULT --log OUT writes one)";
     } else if (regime_logs.empty()) {
       z.note = "no run";
     } else if (!is_executable(render)) {

@@ -9,11 +9,12 @@
 
 #include "evolve/analysis/experiment_analysis.hpp"
 #include "evolve/analysis/run_analysis.hpp"
+#include "evolve/analysis/run_results.hpp"
 
 namespace robozoo {
 
 struct StatsOptions {
-  std::string log_dir;               ///< folder of the runs' logs (*.lcmlog)
+  std::string log_dir;               ///< folder of the runs' logs (*.lcmlog), or else of their compact results (*.results.json)
   std::string out_dir;               ///< where the tables, plots and report go (empty: <log_dir>/stats)
   bool include_unfinished = false;   ///< also use runs whose log lacks generations (default: skip them)
   AnalysisParams analysis;           ///< ground tolerance, topology, which champion changes count
@@ -40,7 +41,23 @@ struct StatsOutcome {
 /// the seeds in order). Throws std::invalid_argument when `dir` is not a folder.
 std::vector<std::string> list_logs(const std::string& dir);
 
-/// Runs the whole job, telling `progress` what it does. Throws
+/// The compact results (*.results.json) directly in `dir`, in list_logs' order.
+std::vector<std::string> list_results(const std::string& dir);
+
+/// "<log name without .lcmlog>.results.json".
+std::string results_file_name(const std::string& log_path);
+
+/// Writes the compact results of every log in `log_dir` into `out_dir`
+/// (created if missing), one file per log; logs that cannot be read, and
+/// unfinished ones unless `include_unfinished`, are listed in `skipped`.
+/// Returns the files written. Throws std::invalid_argument when there is no log.
+std::vector<std::string> export_results(const std::string& log_dir, const std::string& out_dir,
+                                        bool include_unfinished, std::ostream& progress,
+                                        std::vector<std::string>& skipped);
+
+/// Runs the whole job, telling `progress` what it does; reads the logs of
+/// `log_dir`, or its compact results when it holds no log (the same report,
+/// except the zoo sheets, which need logs). Throws
 /// std::invalid_argument when there is no usable log, std::runtime_error when an
 /// output cannot be written or gnuplot fails.
 StatsOutcome run_stats(const StatsOptions& options, std::ostream& progress);

@@ -12,6 +12,7 @@
 #include <memory>
 #include <thread>
 
+#include "evolve/app/champion_command.hpp"
 #include "evolve/app/eval_command.hpp"
 #include "evolve/app/mpi_command.hpp"
 #include "evolve/app/run_command.hpp"
@@ -58,6 +59,12 @@ int main(int argc, char** argv) {
       "eval", "Grow and simulate one genome (random from a seed, or from a genome JSON file), print "
               "its morphology, outcome and fitness");
   robozoo::add_eval_options(*eval_cmd, eval);
+  robozoo::ChampionOptions champion;
+  CLI::App* champion_cmd = app.add_subcommand(
+      "champion", "Write the best-of-run champion of a compact result (robozoo-experiment's results/) as a "
+                  "one-generation log for robozoo-render video, robozoo-replay check and robozoo-view, after "
+                  "checking that this build evaluates it to the committed fitness");
+  robozoo::add_champion_options(*champion_cmd, champion);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -76,6 +83,13 @@ int main(int argc, char** argv) {
       return 2;
     }
     return robozoo::run_eval_command(eval);
+  }
+  if (champion_cmd->parsed()) {
+    if (session) {
+      if (!silent) std::cerr << "robozoo-evolve: --mpi is for evolution runs, not for champion\n";
+      return 2;
+    }
+    return robozoo::run_champion_command(champion);
   }
   if (session)
     return session->rank() == 0 ? robozoo::run_mpi_root(app, run, *session, *watcher)

@@ -36,7 +36,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(CLI::IsMember({"feedforward", "recurrent"}));
   app.add_option("--seed", o.seed, "seed of the run's single random generator");
   app.add_option("--population", o.population, "genomes per generation (paper: 150)")->check(CLI::Range(2, 1000000));
-  app.add_option("--generations", o.generations, "generations to run (paper: 500)")->check(CLI::Range(1, 1000000000));
+  app.add_option("--generations", o.generations,
+                 "generations to run (paper: 500); with --resume, more than the checkpoint's extends the run "
+                 "(a finished one too) to what an uninterrupted run of that many generations logs")->check(CLI::Range(1, 1000000000));
   app.add_option("--steps", o.steps, "physics steps of 0.01 s per evaluation (paper: 2500)")
       ->check(CLI::Range(1, 1000000000));
   app.add_option("--workers", o.workers, "worker processes evaluating genomes (default: number of cores)")
@@ -148,6 +150,15 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
       // command line's, decides how the workers evaluate.
       const Checkpoint c = read_checkpoint(opts.log_path + ".checkpoint");
       config = config_from_json(c.config);
+      // --generations on resume moves the run's end: up only (Evolution refuses less).
+      if (app.count("--generations")) {
+        opts.generations = o.generations;
+        if (o.generations < config.generations)
+          throw ConfigError("--generations " + std::to_string(o.generations) + ": " + opts.log_path +
+                            " was started for " + std::to_string(config.generations) +
+                            " generations; a resumed run can be extended, not shortened");
+        config.generations = o.generations;
+      }
     }
     if (!o.resume && std::filesystem::exists(opts.log_path + ".checkpoint") &&
         std::filesystem::exists(opts.log_path)) {

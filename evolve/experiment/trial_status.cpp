@@ -31,7 +31,6 @@ std::string trial_mismatch(const Checkpoint& c, const Trial& t, const Experiment
   const InitialLinks want_start = arm_initial_links(t.arm);
   differ("initial links", initial_links_name(saved.neat.initial_links), initial_links_name(want_start));
   differ("population", std::to_string(saved.neat.population), std::to_string(p.population));
-  differ("generations", std::to_string(saved.generations), std::to_string(p.generations));
   const int steps = p.steps > 0 ? p.steps : RunConfig{}.eval.sim.steps;
   differ("steps", std::to_string(saved.eval.sim.steps), std::to_string(steps));
   return why.empty() ? why : "it was started with " + why;
@@ -40,15 +39,34 @@ std::string trial_mismatch(const Checkpoint& c, const Trial& t, const Experiment
 TrialStatus trial_status(const Trial& t, const ExperimentParams& p) {
   TrialStatus s;
   const std::string cp = t.log_path + ".checkpoint";
-  if (!std::filesystem::exists(cp)) return s;
+  if (!std::filesystem::exists(cp)) {
+    // Starting afresh would replace the log: a log without its checkpoint can be neither resumed nor extended.
+    if (std::filesystem::exists(t.log_path))
+      throw std::invalid_argument(t.log_path + " has no checkpoint (" + cp +
+                                  "), so it can be neither resumed nor extended; restore the checkpoint, or move "
+                                  "the log away to run the trial again");
+    return s;
+  }
   const Checkpoint c = read_checkpoint(cp);
   const std::string why = trial_mismatch(c, t, p);
   if (!why.empty())
     throw std::invalid_argument(t.log_path + " belongs to another experiment: " + why +
                                 " (use another --out folder, or the sizes it was started with)");
-  s.state = c.finished ? TrialState::Finished : TrialState::Partial;
+  const int32_t planned = c.config.value("generations", 0);
   s.generations_done = generations_done(c);
   s.elapsed_seconds = c.elapsed_seconds;
+  if (planned > p.generations) {
+    // Run further than asked (an arm extended before): done once it has p.generations.
+    if (s.generations_done < p.generations)
+      throw std::invalid_argument(t.log_path + " was started for " + std::to_string(planned) +
+                                  " generations and has " + std::to_string(s.generations_done) +
+                                  "; continue it with --generations " + std::to_string(planned));
+    s.state = TrialState::Finished;
+    s.generations_done = p.generations;
+    return s;
+  }
+  // Fewer planned than asked: resuming extends it (robozoo-evolve --resume --generations).
+  s.state = c.finished && planned == p.generations ? TrialState::Finished : TrialState::Partial;
   return s;
 }
 

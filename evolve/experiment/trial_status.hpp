@@ -18,14 +18,18 @@ struct TrialStatus {
   double elapsed_seconds = 0;    ///< robozoo-evolve's wall time on the trial so far (s)
 };
 
-/// The status of `t`. Throws std::runtime_error for a checkpoint that cannot be
-/// read, and std::invalid_argument when it belongs to another configuration
-/// (see trial_mismatch).
+/// The status of `t` in an experiment of p.generations generations. A trial
+/// started for fewer generations is Partial (resuming extends it); one started
+/// for more is Finished once it has p.generations. Throws std::runtime_error
+/// for a checkpoint that cannot be read, and std::invalid_argument when it
+/// belongs to another configuration (see trial_mismatch), when a trial started
+/// for more generations has fewer than p.generations, or when its log exists
+/// without its checkpoint (it could be neither resumed nor extended).
 TrialStatus trial_status(const Trial& t, const ExperimentParams& p);
 
 /// Empty when the checkpoint `c` was written for trial `t` of experiment `p`
-/// (regime, seed, population, generations, steps: robozoo-evolve's default
-/// when p.steps is 0); otherwise
+/// (regime, seed, start topology, population, steps: robozoo-evolve's default
+/// when p.steps is 0; not generations, which an experiment may raise); otherwise
 /// what differs, e.g. "it was started with population 60, not 150".
 std::string trial_mismatch(const Checkpoint& c, const Trial& t, const ExperimentParams& p);
 

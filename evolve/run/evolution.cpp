@@ -78,6 +78,12 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
                                ", this is robozoo " + software_version() +
                                "; resume with that version (another version may grow, simulate or breed "
                                "differently), or --force to continue anyway");
+    if (options_.generations > 0 && options_.generations < saved.generations)
+      throw std::invalid_argument(checkpoint_path_ + ": the run was started for " +
+                                  std::to_string(saved.generations) + " generations; it can be extended, not cut to " +
+                                  std::to_string(options_.generations));
+    const bool extend_finished = c.finished && options_.generations > saved.generations;
+    if (options_.generations > 0) saved.generations = options_.generations;
     config_ = saved;
     run_id_ = c.run_id;
     rng_.set_state(c.rng_state);
@@ -86,8 +92,24 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     best_so_far_ = c.best_so_far;
     last_champion_hash_ = c.last_champion_hash;
     elapsed_before_ = c.elapsed_seconds;
-    finished_ = c.finished;
+    finished_ = c.finished && !extend_finished;
     resumed_ = true;
+    if (extend_finished) {
+      // A finished run's checkpoint holds its last generation, evaluated but not
+      // bred (and the generator before breeding). Evaluation is deterministic, so
+      // evaluating it again gives the fitnesses the uninterrupted run bred with.
+      const std::vector<Genome> genomes = population_->genomes();
+      const std::vector<EvalSummary> results = evaluator_.evaluate(genomes);
+      if (results.size() != genomes.size())
+        throw std::logic_error("evaluator returned " + std::to_string(results.size()) + " results for " +
+                               std::to_string(genomes.size()) + " genomes");
+      std::vector<double> fitness(results.size());
+      for (size_t i = 0; i < results.size(); ++i) {
+        if (results[i].genome_id != genomes[i].id) throw std::logic_error("evaluator returned results out of order");
+        fitness[i] = results[i].fitness;
+      }
+      population_->advance(fitness, rng_);
+    }
     checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint,
                                                             generations_done());
     if (!finished_) log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));

@@ -29,6 +29,9 @@ struct EvolveOptions {
   double bus_bytes_per_second = 1e6;  ///< live publishing's sustained rate (bytes/s); 0: unpaced (BusParams)
   bool resume = false;          ///< continue from the checkpoint
   bool force_version = false;   ///< resume a checkpoint written by another robozoo version anyway
+  int32_t generations = 0;      ///< with resume: run to this many generations, at least the checkpoint's
+                                ///< (count; 0: the checkpoint's). More extends the run, finished or not,
+                                ///< to what an uninterrupted run of that many generations logs.
   bool background_checkpoint = false;  ///< write each generation's checkpoint on a thread while the
                                        ///< next generation is evaluated (robozoo-evolve --mpi: rank 0's
                                        ///< largest serial cost); a failed write is reported one

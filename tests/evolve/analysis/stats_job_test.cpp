@@ -26,6 +26,18 @@ TEST(StatsJob, ListLogsPutsSeedsInNumericOrder) {
                                              "recurrent-s10.lcmlog"}));
 }
 
+TEST(StatsJob, ListResultsTakesOnlyCompactResultsInNumericOrder) {
+  TempDir d;
+  for (const char* name : {"recurrent-s10.results.json", "recurrent-s2.results.json", "feedforward-s1.results.json",
+                           "recurrent-s2.lcmlog", ".results.json", "notes.json", "x.results.json.tmp"})
+    std::ofstream(d / name) << "x";
+  std::vector<std::string> names;
+  for (const auto& p : list_results(d.path)) names.push_back(std::filesystem::path(p).filename().string());
+  EXPECT_EQ(names, (std::vector<std::string>{"feedforward-s1.results.json", "recurrent-s2.results.json",
+                                             "recurrent-s10.results.json"}));
+  EXPECT_EQ(results_file_name("/runs/paper/recurrent-sparse-s3.lcmlog"), "recurrent-sparse-s3.results.json");
+}
+
 TEST(StatsJob, ListLogsRefusesWhatIsNotAFolder) {
   TempDir d;
   std::ofstream(d / "file") << "x";

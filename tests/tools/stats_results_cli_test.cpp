@@ -1,0 +1,87 @@
+// robozoo-stats from compact results: a small real experiment's logs give
+// report A; the compact results robozoo-experiment left give report B; every
+// file of A and B is the same byte for byte (the zoo sheets, which need logs,
+// left out of both with --no-zoo). robozoo-stats --export-results writes the
+// same compact results from the logs as robozoo-experiment did.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "tests/support/evolve_runs.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo {
+namespace {
+
+using namespace robozoo::testing;
+namespace fs = std::filesystem;
+
+std::vector<std::string> files_in(const std::string& dir) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(StatsResultsCli, CompactResultsGiveTheReportOfTheLogsByteForByte) {
+  TempDir logs_home, results_home, reports;
+  const std::string exp = logs_home / "exp";
+  const auto run = run_shell(join({bin("robozoo-experiment"), "--out", exp, "--trials", "2", "--population", "12",
+                                   "--generations", "4", "--steps", "300", "--workers", "1", "--progress-interval",
+                                   "0"}));
+  ASSERT_EQ(run.status, 0) << run.output;
+  // One compact result per trial, in OUT/results.
+  const std::vector<std::string> results = files_in(exp + "/results");
+  ASSERT_EQ(results, (std::vector<std::string>{"feedforward-s1.results.json", "feedforward-s4.results.json",
+                                               "recurrent-s2.results.json", "recurrent-s5.results.json"}));
+  // The same folder name elsewhere, holding only the compact results: the report names its source folder.
+  fs::create_directories(results_home / "exp");
+  for (const auto& f : results) fs::copy_file(exp + "/results/" + f, results_home / "exp/" + f);
+
+  const std::string flags = " --no-zoo --note 'a note'";
+  const auto a = run_shell("cd '" + logs_home.path + "' && " + bin("robozoo-stats") + " exp --out '" +
+                           (reports / "A") + "'" + flags);
+  ASSERT_EQ(a.status, 0) << a.output;
+  const auto b = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --out '" +
+                           (reports / "B") + "'" + flags);
+  ASSERT_EQ(b.status, 0) << b.output;
+  const auto fa = files_in(reports / "A"), fb = files_in(reports / "B");
+  ASSERT_EQ(fa, fb);
+  EXPECT_NE(std::find(fa.begin(), fa.end(), "report.md"), fa.end());
+  EXPECT_NE(std::find(fa.begin(), fa.end(), "fig1_fitness.png"), fa.end());
+  EXPECT_GE(fa.size(), 15u);
+  for (const auto& f : fa) EXPECT_EQ(read_file(reports / "A/" + f), read_file(reports / "B/" + f)) << f;
+  // The report has what only the checkpoints (next to the logs) know: robozoo-evolve's time.
+  EXPECT_NE(read_file(reports / "B/report.md").find("of wall time on the 4 runs with a checkpoint"),
+            std::string::npos);
+
+  // With zoo sheets asked for, a folder of compact results says why there is none.
+  const auto zoo = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --no-plots --out '" +
+                             (reports / "C") + "'");
+  ASSERT_EQ(zoo.status, 0) << zoo.output;
+  EXPECT_NE(read_file(reports / "C/report.md").find("the folder holds compact results"), std::string::npos);
+
+  // --export-results: the same files robozoo-experiment wrote.
+  const auto ex = run_shell(bin("robozoo-stats") + " '" + exp + "' --export-results '" + (reports / "R") + "'");
+  ASSERT_EQ(ex.status, 0) << ex.output;
+  ASSERT_EQ(files_in(reports / "R"), results);
+  for (const auto& f : results) EXPECT_EQ(read_file(reports / "R/" + f), read_file(exp + "/results/" + f)) << f;
+}
+
+TEST(StatsResultsCli, AFolderWithoutLogsOrResultsIsAnError) {
+  TempDir d;
+  const auto r = run_shell(bin("robozoo-stats") + " '" + d.path + "' --no-plots --no-zoo");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("(nor compact results, *.results.json)"), std::string::npos) << r.output;
+  std::ofstream(d / "x.results.json") << "{\"format\": \"robozoo-run-results\", \"version\": 1}";
+  const auto bad = run_shell(bin("robozoo-stats") + " '" + d.path + "' --no-plots --no-zoo");
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find(d.path + "/x.results.json: results.run: missing"),
+            std::string::npos)
+      << bad.output;
+}
+
+}  // namespace
+}  // namespace robozoo
