@@ -29,8 +29,9 @@ long double check(double x, long double bound) {
 
 TEST(Tanh, WithinTwoAndAHalfUlp) {
   long double worst = 0;
-  // The CTRNN's arguments (y + omega) stay within a few tens: dense sweep of
-  // [-40, 40], random arguments, and magnitudes from 2^-1074 up.
+  // The CTRNN's arguments (y + omega) of robozoo-bench's robots lie in
+  // [-126, 216], saturated (exactly +-1, SaturatesAtOne) beyond +-19.1: dense
+  // sweep of [-40, 40], random arguments, and magnitudes from 2^-1074 to 64.
   for (int i = -800000; i <= 800000; ++i) worst = std::max(worst, check(i * 5e-5, 2.5L));
   Stream s(21);
   for (int i = 0; i < 1000000; ++i) worst = std::max(worst, check(s.uniform(-25.0, 25.0), 2.5L));

@@ -33,7 +33,7 @@ long double check(double x, long double bound) {
 }
 
 TEST(Trig, WithinOneUlpWhereCppnSumsLie) {
-  // CPPN sums of robozoo-bench's genomes stay within +-60: dense sweeps of
+  // CPPN sums of robozoo-bench's genomes lie in [-41, 51] (cosine's in [-12.5, 9.8]): dense sweeps of
   // [-60, 60] and [-pi, pi], random arguments in [-100, 100].
   long double worst = 0;
   for (int i = -600000; i <= 600000; ++i) {
