@@ -8,8 +8,11 @@
 // integer operations on the bit patterns. What would break that, and the guard:
 // - fused multiply-add contraction (a*b+c rounded once): the project builds
 //   with -ffp-contract=off, and every function body starts with
-//   ROBOZOO_NO_FP_CONTRACT (clang's scoped pragma; gcc has no scoped form and
-//   relies on the flag, without which it contracts only for targets with FMA);
+//   ROBOZOO_NO_FP_CONTRACT (clang's scoped pragma, which keeps clang's default
+//   -ffp-contract=on from contracting here; gcc has no scoped form and relies on
+//   the flag, as ISO C++ mode's default is off). -ffp-contract=fast overrides
+//   both and changes the bits on machines with FMA: the pinned hashes of
+//   tests/evolve/cppn/activation_test.cpp then fail;
 // - -ffast-math (reassociation, reciprocal approximations): refused below;
 // - x87 extended precision (32-bit x86 without SSE2): refused below.
 #include <cstdint>

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "evolve/math/bits.hpp"
+
 namespace robozoo::math::test {
 
 /// |y - ref| in ulps of ref (the spacing of doubles at ref; 2^-1074 for
@@ -38,7 +40,11 @@ struct Stream {
     return z ^ (z >> 31);
   }
   /// Uniform in [lo, hi).
-  double uniform(double lo, double hi) { return lo + (hi - lo) * (static_cast<double>(next() >> 11) * 0x1p-53); }
+  /// Uniform in [lo, hi) (never contracted: the pinned hashes depend on these bits).
+  double uniform(double lo, double hi) {
+    ROBOZOO_NO_FP_CONTRACT
+    return lo + (hi - lo) * (static_cast<double>(next() >> 11) * 0x1p-53);
+  }
 };
 
 /// FNV-1a over the bits of a sequence of doubles.
