@@ -7,10 +7,13 @@
 // queries, the rest of growth, controller + sensors, ODE stepping and
 // bookkeeping; and the ratio of the full evaluation time to a bare ODE loop
 // stepping the same bodies and joints for the same number of steps with no
-// controller, sensors or bookkeeping, measured in the same run.
+// controller, sensors or bookkeeping, measured in the same run. Every genome is
+// measured twice, alternating: with robozoo's own activation functions (what
+// every program uses) and with the C library's exp/cos/sin (the baseline, "before";
+// the CTRNN's tanh is robozoo's in both).
 #include <CLI/CLI.hpp>
 
-#include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -29,11 +32,20 @@
 #include "evolve/core/version.hpp"
 
 using namespace robozoo;
-using Clock = std::chrono::steady_clock;
-
 namespace {
 
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+/// This thread's CPU time: the machine may be shared, and wall time would count
+/// the time other processes hold the core.
+struct Clock {
+  using time_point = double;
+  static double now() {
+    timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+  }
+};
+
+double since(double t0) { return Clock::now() - t0; }
 
 struct Totals {
   int genomes = 0, drawn = 0, simulated = 0;
@@ -42,16 +54,27 @@ struct Totals {
   double full = 0, bare = 0;
 };
 
-/// Evaluates g as a worker does (timed as a whole), then again stage by stage,
-/// then steps the same robot in the bare ODE loop.
-void measure(const Genome& g, const EvalParams& eval, Totals& t) {
+/// Evaluates g as a worker does (evaluate(): decode, grow, simulate; with
+/// libm_activations, the same steps with the C library's activations), timed as
+/// a whole, then again stage by stage, then steps the same robot in the bare ODE
+/// loop.
+void measure(const Genome& g, const EvalParams& eval, bool libm_activations, Totals& t) {
   ++t.genomes;
   auto t0 = Clock::now();
-  const Evaluation e = evaluate(g, eval);
+  int steps = 0;
+  if (!libm_activations) {
+    steps = evaluate(g, eval).sim.steps_run;
+  } else {
+    Network cppn(g, robot_layout(), eval.cppn_updates);
+    cppn.use_libm_activations(true);
+    const Robot grown = grow(cppn, eval.growth);
+    if (grown.simulate) steps = simulate(grown, eval.sim).steps_run;
+  }
   t.full += since(t0);
   t0 = Clock::now();
   Network net(g, robot_layout(), eval.cppn_updates);
   t.decode += since(t0);
+  net.use_libm_activations(libm_activations);
   net.enable_timing(true);
   t0 = Clock::now();
   const Robot robot = grow(net, eval.growth);
@@ -69,16 +92,25 @@ void measure(const Genome& g, const EvalParams& eval, Totals& t) {
   t.controller += tm.controller;
   t.physics += tm.physics;
   t.bookkeeping += tm.bookkeeping;
-  const int steps = e.sim.steps_run;
   t.steps += steps;
   t0 = Clock::now();
   simulate_bare(robot, eval.sim, steps);
   t.bare += since(t0);
 }
 
-Totals bench_random(Regime regime, const RunConfig& config, int want, const RandomGenomeParams& rp, uint64_t seed,
-                    int max_draws) {
-  Totals t;
+struct BeforeAfter {
+  Totals libm, own;  // the C library's activations (before), robozoo's (after)
+};
+
+void measure_both(const Genome& g, const EvalParams& eval, bool baseline, BeforeAfter& t) {
+  if (baseline) measure(g, eval, true, t.libm);
+  measure(g, eval, false, t.own);
+}
+
+BeforeAfter bench_random(Regime regime, const RunConfig& config, int want, const RandomGenomeParams& rp, uint64_t seed,
+                         int max_draws, bool baseline) {
+  BeforeAfter ba;
+  Totals& t = ba.own;
   Rng rng(seed);
   int drawn = 0;
   while (t.genomes < want && drawn < max_draws) {
@@ -88,23 +120,24 @@ Totals bench_random(Regime regime, const RunConfig& config, int want, const Rand
       Network probe(g, robot_layout(), config.eval.cppn_updates);
       if (!grow(probe, config.eval.growth).simulate) continue;
     }
-    measure(g, config.eval, t);
+    measure_both(g, config.eval, baseline, ba);
     if (t.genomes % 20 == 0) std::cerr << "  " << regime_name(regime) << ": " << t.genomes << "/" << want << "\r" << std::flush;
   }
-  t.drawn = drawn;
+  t.drawn = ba.libm.drawn = drawn;
   std::cerr << "\n";
-  return t;
+  return ba;
 }
 
-Totals bench_population(const std::vector<Genome>& genomes, const RunConfig& config) {
-  Totals t;
+BeforeAfter bench_population(const std::vector<Genome>& genomes, const RunConfig& config, bool baseline) {
+  BeforeAfter ba;
+  Totals& t = ba.own;
   for (const Genome& g : genomes) {
-    measure(g, config.eval, t);
+    measure_both(g, config.eval, baseline, ba);
     if (t.genomes % 10 == 0) std::cerr << "  log population: " << t.genomes << "/" << genomes.size() << "\r" << std::flush;
   }
-  t.drawn = t.genomes;
+  t.drawn = ba.libm.drawn = t.genomes;
   std::cerr << "\n";
-  return t;
+  return ba;
 }
 
 nlohmann::json report(const Totals& t) {
@@ -139,7 +172,7 @@ nlohmann::json report(const Totals& t) {
   return j;
 }
 
-void print(const std::string& name, const nlohmann::json& j) {
+void print_one(const std::string& name, const nlohmann::json& j) {
   std::printf("%s: %d genomes (%d simulated, of %d drawn), %.1f spheres, %.0f steps on average\n", name.c_str(),
               j["genomes"].get<int>(), j["simulated"].get<int>(), j["genomes_drawn"].get<int>(),
               j["mean_spheres"].get<double>(), j["mean_steps"].get<double>());
@@ -156,6 +189,18 @@ void print(const std::string& name, const nlohmann::json& j) {
               j["full_evaluation_seconds"].get<double>(), j["bare_ode_seconds"].get<double>());
 }
 
+void print(const std::string& name, const nlohmann::json& j) {
+  print_one(name + " (robozoo's activations)", j);
+  if (j.contains("libm_activations")) print_one(name + " (C library's activations, before)", j["libm_activations"]);
+}
+
+/// The figures of `ba`: robozoo's activations, and under "libm_activations" the baseline's.
+nlohmann::json report_both(const BeforeAfter& ba, bool baseline) {
+  nlohmann::json j = report(ba.own);
+  if (baseline) j["libm_activations"] = report(ba.libm);
+  return j;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -163,7 +208,7 @@ int main(int argc, char** argv) {
                "evaluation to a bare ODE loop over the same bodies and joints (the engine's limit)."};
   int genomes = 200, rounds = 30, max_draws = 200000;
   uint64_t seed = 1;
-  bool json = false, log_only = false;
+  bool json = false, log_only = false, no_baseline = false;
   std::string config_file, log_path;
   app.add_option("--genomes", genomes, "simulated random genomes per regime (default 200)")->check(CLI::Range(1, 100000));
   app.add_option("--mutations", rounds, "mutation rounds of each random genome (default 30)")->check(CLI::Range(0, 10000));
@@ -174,7 +219,10 @@ int main(int argc, char** argv) {
                  "the last generation of a finished run, the next one bred of an unfinished run)");
   app.add_flag("--log-only", log_only, "with --log: measure the logged population only, no random genomes");
   app.add_option("--config", config_file, "configuration file (.json or .toml) for the random genomes");
-  app.add_flag("--json", json, "print the figures as JSON");
+  app.add_flag("--no-baseline", no_baseline,
+               "measure robozoo's activations only, not also the C library's (the baseline, half the time)");
+  app.add_flag("--json", json,
+               "print the figures as JSON (per regime; the baseline's under \"libm_activations\")");
   app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
   if (log_only && log_path.empty()) {
@@ -203,17 +251,17 @@ int main(int argc, char** argv) {
     for (Regime r : {Regime::FeedForward, Regime::Recurrent}) {
       RandomGenomeParams rp;
       rp.rounds = rounds;
-      const Totals t = bench_random(r, config, genomes, rp, seed, max_draws);
+      const BeforeAfter t = bench_random(r, config, genomes, rp, seed, max_draws, !no_baseline);
       std::string name = regime_name(r);
-      nlohmann::json j = report(t);
+      nlohmann::json j = report_both(t, !no_baseline);
       j["initial_links"] = initial_links_name(config.neat.initial_links);
       out[name] = j;
       names.push_back(name);
     }
   }
   if (!log_path.empty()) {
-    const Totals t = bench_population(checkpoint.population.genomes, log_config);
-    nlohmann::json j = report(t);
+    const BeforeAfter t = bench_population(checkpoint.population.genomes, log_config, !no_baseline);
+    nlohmann::json j = report_both(t, !no_baseline);
     j["log"] = log_path;
     j["regime"] = regime_name(log_config.regime);
     j["generation"] = checkpoint.population.generation;

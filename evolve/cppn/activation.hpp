@@ -1,9 +1,12 @@
 #pragma once
 // CPPN activation functions, with HyperNEAT's definitions (docs/method.md, "The CPPN"),
-// plus the NEAT paper's steepened sigmoid for its XOR check.
-#include <cmath>
+// plus the NEAT paper's steepened sigmoid for its XOR check. exp, cos and sin are
+// robozoo's own (evolve/math/): the same bits from any compiler, no libm.
 #include <cstdint>
 #include <string>
+
+#include "evolve/math/exp.hpp"
+#include "evolve/math/trig.hpp"
 
 namespace robozoo {
 
@@ -18,25 +21,28 @@ enum class Activation : int8_t {
 };
 constexpr int kNumActivations = 6;
 
-/// The signed sigmoid from e^-x (the batched CPPN path computes e^-x for a whole
-/// row first): the one expression both paths share, so they give the same bits.
-inline double signed_sigmoid_from_exp(double exp_minus_x) { return 2.0 / (1.0 + exp_minus_x) - 1.0; }
+/// One definition per activation, shared by the scalar and the row path, so
+/// they give the same bits.
+inline double signed_sigmoid(double x) { return 2.0 / (1.0 + math::exp(-x)) - 1.0; }
+inline double gaussian(double x) { return math::exp(-x * x); }
+inline double steepened_sigmoid(double x) { return 1.0 / (1.0 + math::exp(-4.9 * x)); }
 
 inline double activate(Activation a, double x) {
   switch (a) {
-    case Activation::SignedSigmoid: return signed_sigmoid_from_exp(std::exp(-x));
-    case Activation::SignedCosine: return std::cos(x);
-    case Activation::Gaussian: return std::exp(-x * x);
+    case Activation::SignedSigmoid: return signed_sigmoid(x);
+    case Activation::SignedCosine: return math::cos(x);
+    case Activation::Gaussian: return gaussian(x);
     case Activation::Linear: return x;
-    case Activation::Sine: return std::sin(x);
-    case Activation::SteepenedSigmoid: return 1.0 / (1.0 + std::exp(-4.9 * x));
+    case Activation::Sine: return math::sin(x);
+    case Activation::SteepenedSigmoid: return steepened_sigmoid(x);
   }
   return 0.0;
 }
 
 /// activate(a, x[p]) for p in [0, n), written to y (y may equal x). Every element
-/// gets exactly activate()'s operations (the same libm calls, no -ffast-math), so
-/// the bits are the same; only the loop is shaped for the vector unit.
+/// gets exactly activate()'s operations (element-wise, branch-free, no
+/// -ffast-math), so the bits are the same; the loops are shaped for the
+/// compiler to vectorise.
 void activate_row(Activation a, const double* x, double* y, int n);
 
 /// Short lower-case name ("signed_sigmoid", "signed_cosine", "gaussian", "linear", "sine",

@@ -1,16 +1,24 @@
 #include "evolve/cppn/network.hpp"
 
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
 
+#include "evolve/cppn/activation_libm.hpp"
+
 namespace robozoo {
 
 namespace {
+
+double thread_cpu_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 /// Marks the points where rows a and b differ bitwise (+0.0 and -0.0 differ, a
 /// NaN equals its own bits) in `point_changed`; returns whether any point differs.
@@ -115,7 +123,7 @@ void Network::run(const QueryInputs& inputs, QueryOutputs& outputs, bool synchro
                                 std::to_string(outputs.rows()) + " x " + std::to_string(outputs.cols()) +
                                 " outputs, expected " + std::to_string(num_inputs_) + " and " +
                                 std::to_string(num_outputs_) + " rows of equal length");
-  const auto t0 = timing_ ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+  const double t0 = timing_ ? thread_cpu_seconds() : 0.0;
   const int total = static_cast<int>(inputs.cols());
   for (int first = 0; first < total; first += kBlockPoints) {
     const int m = std::min(kBlockPoints, total - first);
@@ -129,7 +137,7 @@ void Network::run(const QueryInputs& inputs, QueryOutputs& outputs, bool synchro
     }
   }
   queries_ += total;
-  if (timing_) query_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (timing_) query_seconds_ += thread_cpu_seconds() - t0;
 }
 
 void Network::load_block(const QueryInputs& inputs, int first, int m) {
@@ -188,6 +196,14 @@ void Network::add_terms(double* s, int k0, int k1, const double* const* rows, bo
   flush();
 }
 
+void Network::activate_node_row(int v, double* s, int m) const {
+  const auto a = static_cast<Activation>(act_[v]);
+  if (libm_)
+    activate_row_libm(a, s, s, m);
+  else
+    activate_row(a, s, s, m);
+}
+
 void Network::single_pass_block(int m) {
   const int n = static_cast<int>(act_.size());
   for (int v = num_inputs_; v < n; ++v) rows_[v] = &val_[0](v, 0);
@@ -195,7 +211,7 @@ void Network::single_pass_block(int m) {
     double* s = &val_[0](v, 0);
     std::copy(&base_(v, 0), &base_(v, 0) + m, s);
     add_terms(s, prefix_end_[v], in_begin_[v + 1], rows_.data(), false, m);
-    activate_row(static_cast<Activation>(act_[v]), s, s, m);
+    activate_node_row(v, s, m);
   }
 }
 
@@ -211,7 +227,7 @@ void Network::synchronous_block(QueryOutputs& outputs, int first, int m) {
     double* s = &val_[cur](v, 0);
     std::copy(&base_(v, 0), &base_(v, 0) + m, s);
     add_terms(s, prefix_end_[v], in_begin_[v + 1], rows_.data(), true, m);
-    activate_row(static_cast<Activation>(act_[v]), s, s, m);
+    activate_node_row(v, s, m);
     changed_[cur][v] = mark_changes(s, z, m, point_changed_.data());
   }
   std::swap(prev, cur);
@@ -235,7 +251,7 @@ void Network::synchronous_block(QueryOutputs& outputs, int first, int m) {
       }
       std::copy(&base_(v, 0), &base_(v, 0) + m, s);
       add_terms(s, prefix_end_[v], in_begin_[v + 1], rows_.data(), false, m);
-      activate_row(static_cast<Activation>(act_[v]), s, s, m);
+      activate_node_row(v, s, m);
       changed_[cur][v] = mark_changes(s, old, m, point_changed_.data());
     }
     std::swap(prev, cur);
@@ -283,7 +299,8 @@ void Network::query_reference(const double* inputs, double* outputs) {
     for (int node = num_inputs_; node < n; ++node) {
       double s = 0.0;
       for (int k = in_begin_[node]; k < in_begin_[node + 1]; ++k) s += w[k] * ref_prev_[from[k]];
-      ref_cur_[node] = activate(static_cast<Activation>(act_[node]), s);
+      const auto a = static_cast<Activation>(act_[node]);
+      ref_cur_[node] = libm_ ? activate_libm(a, s) : activate(a, s);
     }
     std::swap(ref_cur_, ref_prev_);
   }

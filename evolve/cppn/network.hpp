@@ -16,7 +16,7 @@
 //   input such as z or an unset sensor one-hot; every node in the first update)
 //   is skipped: a sum that starts from +0.0 is never -0.0, and adding +-0 to
 //   anything else leaves its bits unchanged;
-// - activations apply the same libm calls element by element (activate_row);
+// - activations apply the same operations element by element (activate_row);
 // - a node none of whose sources changed in the previous update keeps its values
 //   (a pure function of unchanged bits gives the same bits), and a point at which
 //   no node changed has reached a fixed point: its outputs are final and it
@@ -74,9 +74,13 @@ class Network {
 
   /// Points queried so far (for benchmarks: growth's CPPN share).
   long long queries() const { return queries_; }
-  /// With timing on, query_batch adds its wall time to query_seconds() (benchmarks).
+  /// With timing on, query_batch adds its thread CPU time to query_seconds() (benchmarks).
   void enable_timing(bool on) { timing_ = on; }
   double query_seconds() const { return query_seconds_; }
+  /// With this on, activations use the C library's exp/cos/sin
+  /// (activation_libm.hpp) instead of robozoo's own: for tests and robozoo-bench's
+  /// baseline only, never for results.
+  void use_libm_activations(bool on) { libm_ = on; }
 
  private:
   void run(const QueryInputs& inputs, QueryOutputs& outputs, bool synchronous);
@@ -87,6 +91,7 @@ class Network {
   /// rows from `rows`; `skip_nodes`: non-input sources are all zero (first update).
   void add_terms(double* s, int k0, int k1, const double* const* rows, bool skip_nodes, int m) const;
   void settle_points(QueryOutputs& outputs, int first, int& m);
+  void activate_node_row(int v, double* s, int m) const;
 
   int num_inputs_ = 0, num_outputs_ = 0, updates_ = 10;
   std::vector<int> act_;            // activation code per compact node index
@@ -111,6 +116,7 @@ class Network {
   std::vector<double> ref_cur_, ref_prev_;  // query_reference's state
   long long queries_ = 0;
   bool timing_ = false;
+  bool libm_ = false;
   double query_seconds_ = 0.0;
 };
 

@@ -1,6 +1,7 @@
 #include "evolve/sim/ctrnn.hpp"
 
-#include <cmath>
+#include "evolve/math/tanh.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -27,7 +28,7 @@ Ctrnn::Ctrnn(const Robot& robot) : robot_(&robot) {
 void Ctrnn::reset() {
   for (size_t i = 0; i < y_.size(); ++i) {
     y_[i] = 0.0;
-    out_[i] = std::tanh(robot_->neurons[i].omega);
+    out_[i] = math::tanh(robot_->neurons[i].omega);
   }
 }
 
@@ -44,7 +45,7 @@ void Ctrnn::step(const double* sensor_values, double dt) {
   }
   for (int i = 0; i < n; ++i) {
     y_[i] += dt * dy_[i];
-    out_[i] = std::tanh(y_[i] + r.neurons[i].omega);
+    out_[i] = math::tanh(y_[i] + r.neurons[i].omega);
   }
 }
 
