@@ -1,4 +1,5 @@
 #include "evolve/growth/hinge.hpp"
+#include "evolve/math/trig.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -16,7 +17,7 @@ Eigen::Vector3d hinge_axis(const Eigen::Vector3d& parent_to_child, double theta)
   n.normalize();
   // Rodrigues for n perpendicular to a: n cos(phi) + (a x n) sin(phi).
   const double phi = M_PI * theta;
-  Eigen::Vector3d axis = n * std::cos(phi) + a.cross(n) * std::sin(phi);
+  Eigen::Vector3d axis = n * math::cos(phi) + a.cross(n) * math::sin(phi);
   return axis.normalized();
 }
 

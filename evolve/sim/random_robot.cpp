@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "evolve/sim/robot_builder.hpp"
+#include "evolve/math/trig.hpp"
 
 namespace robozoo {
 
@@ -34,7 +35,7 @@ Robot random_robot(Rng& rng, const RandomRobotParams& p) {
   for (int attempt = 0; attempt < p.max_attempts && static_cast<int>(sp.size()) < target; ++attempt) {
     const int parent = static_cast<int>(rng.index(sp.size()));
     const double angle = rng.uniform(0.0, 2 * M_PI);
-    const Eigen::Vector3d a(std::cos(angle), std::sin(angle), 0.0);
+    const Eigen::Vector3d a(math::cos(angle), math::sin(angle), 0.0);
     const Eigen::Vector3d c = sp[parent].c + sp[parent].r * a;
     const double r = std::clamp(sp[parent].r * rng.uniform(0.0, 2.0), p.r_min, p.r_max);
     const bool joint = rng.bernoulli(p.joint_probability);
@@ -54,7 +55,7 @@ Robot random_robot(Rng& rng, const RandomRobotParams& p) {
     if (joint) {
       const Eigen::Vector3d n = a.cross(Eigen::Vector3d::UnitZ()).normalized();
       const double phi = M_PI * rng.uniform(-1.0, 1.0);
-      axis = (n * std::cos(phi) + a.cross(n) * std::sin(phi)).normalized();
+      axis = (n * math::cos(phi) + a.cross(n) * math::sin(phi)).normalized();
       range = p.max_joint_range * (1.0 - rng.uniform());  // in (0, max]
       body_parent.push_back(body[parent]);
     }

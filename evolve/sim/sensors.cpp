@@ -1,4 +1,5 @@
 #include "evolve/sim/sensors.hpp"
+#include "evolve/math/trig.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ double distance_sensor_value(const Eigen::Vector3d& c, const SimParams& p) {
 }
 
 double time_sensor_value(double time, const SimParams& p) {
-  return std::sin(2.0 * M_PI * p.time_sensor_frequency * time);
+  return math::sin(2.0 * M_PI * p.time_sensor_frequency * time);
 }
 
 void read_sensors(const Robot& robot, const SimParams& p,
