@@ -6,10 +6,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "evolve/math/bits.hpp"
 
 namespace robozoo::math::test {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// |y - ref| in ulps of ref (the spacing of doubles at ref; 2^-1074 for
 /// results in the subnormal range). Infinite if one is NaN or infinite and the

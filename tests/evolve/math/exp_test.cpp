@@ -13,12 +13,7 @@
 namespace robozoo::math {
 namespace {
 
-using test::bits;
-using test::Stream;
-using test::ulp_error;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using namespace test;  // bits, Stream, ulp_error, kInf, kNaN
 
 /// Largest ulp error of exp over `count` arguments drawn by `draw`; results in
 /// the subnormal range are checked separately (their ulp is 2^-1074).

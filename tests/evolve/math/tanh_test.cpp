@@ -14,12 +14,7 @@
 namespace robozoo::math {
 namespace {
 
-using test::bits;
-using test::Stream;
-using test::ulp_error;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using namespace test;  // bits, Stream, ulp_error, kInf, kNaN
 
 long double check(double x, long double bound) {
   const long double e = ulp_error(tanh(x), tanhl(static_cast<long double>(x)));

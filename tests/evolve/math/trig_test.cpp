@@ -15,12 +15,7 @@
 namespace robozoo::math {
 namespace {
 
-using test::bits;
-using test::Stream;
-using test::ulp_error;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using namespace test;  // bits, Stream, ulp_error, kInf, kNaN
 constexpr long double kPio2L = 1.570796326794896619231321691639751442L;
 
 /// Both functions at x, the worse error; fails the test above `bound` ulp.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/evolve/neat/tiny_genome.hpp"
+
 namespace robozoo {
 namespace {
 
@@ -14,15 +16,7 @@ GenomeLayout small_layout() {
   return l;
 }
 
-Genome base(int64_t id) {
-  Genome g;
-  g.id = id;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
-             {1, NodeKind::Input, Activation::Linear, 0.0},
-             {2, NodeKind::Bias, Activation::Linear, 0.0},
-             {3, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
-  return g;
-}
+Genome base(int64_t id) { return test::tiny_genome(id, Activation::SignedSigmoid); }
 
 // a: 0->3 (0), 1->3 (1), 2->3 (2, disabled), 0->4 (3), 4->3 (4); hidden 4.
 Genome parent_a() {

@@ -17,19 +17,12 @@
 #include "evolve/neat/speciation.hpp"
 #include "evolve/neat/xor_presets.hpp"
 #include "evolve/neat/xor_task.hpp"
+#include "tests/evolve/neat/tiny_genome.hpp"
 
 namespace robozoo {
 namespace {
 
-Genome base(int64_t id) {
-  Genome g;
-  g.id = id;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
-             {1, NodeKind::Input, Activation::Linear, 0.0},
-             {2, NodeKind::Bias, Activation::Linear, 0.0},
-             {3, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
-  return g;
-}
+Genome base(int64_t id) { return test::tiny_genome(id, Activation::SignedSigmoid); }
 
 // a: 0->3 (0), 1->3 (1), 0->4 (3), 4->3 (4); hidden 4 at 0.5.
 Genome parent_a() {

@@ -17,21 +17,14 @@
 #include "evolve/neat/reproduction.hpp"
 #include "evolve/neat/xor_task.hpp"
 #include "tests/evolve/neat/classic_params.hpp"
+#include "tests/evolve/neat/tiny_genome.hpp"
 
 namespace robozoo {
 namespace {
 
 GenomeLayout small_layout() { return xor_layout(Activation::SteepenedSigmoid); }
 
-Genome base(int64_t id) {
-  Genome g;
-  g.id = id;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
-             {1, NodeKind::Input, Activation::Linear, 0.0},
-             {2, NodeKind::Bias, Activation::Linear, 0.0},
-             {3, NodeKind::Output, Activation::SteepenedSigmoid, 1.0}};
-  return g;
-}
+Genome base(int64_t id) { return test::tiny_genome(id, Activation::SteepenedSigmoid); }
 
 // a: 0->3 (0), 1->3 (1, disabled), 2->3 (2), 0->4 (3), 4->3 (4, disabled); hidden 4.
 Genome parent_a() {

@@ -1,0 +1,20 @@
+#pragma once
+// The smallest genome the NEAT tests build parents from: inputs 0 and 1, the bias 2
+// and output 3 (drawing positions 0 and 1), no links. Tests add hidden nodes and links.
+#include <cstdint>
+
+#include "evolve/cppn/genome.hpp"
+
+namespace robozoo::test {
+
+inline Genome tiny_genome(int64_t id, Activation output = Activation::SignedSigmoid) {
+  Genome g;
+  g.id = id;
+  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
+             {1, NodeKind::Input, Activation::Linear, 0.0},
+             {2, NodeKind::Bias, Activation::Linear, 0.0},
+             {3, NodeKind::Output, output, 1.0}};
+  return g;
+}
+
+}  // namespace robozoo::test
