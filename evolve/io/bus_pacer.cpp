@@ -44,4 +44,10 @@ int64_t BusPacer::schedule(int64_t ready_us, size_t bytes) {
   return t;
 }
 
+void BusPacer::not_before(int64_t us) {
+  if (started_ && us <= last_us_) return;
+  last_us_ = us;  // the buckets stay as they are (full before the first message)
+  started_ = true;
+}
+
 }  // namespace robozoo

@@ -38,6 +38,8 @@ class BusPacer {
   /// scheduled before it. A message larger than `burst_bytes` waits for a full
   /// byte bucket, and what it takes beyond that delays the next message.
   int64_t schedule(int64_t ready_us, size_t bytes);
+  /// No message is scheduled before `us` (a resumed run's last stamp).
+  void not_before(int64_t us);
   const BusPacing& pacing() const { return pacing_; }
 
  private:

@@ -90,7 +90,13 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     resumed_ = true;
     checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint,
                                                             generations_done());
-    if (!finished_) log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
+    if (!finished_) {
+      log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
+      // Stamps run ahead of the clock while messages wait for their turn: the
+      // log's go on from its last one, never back.
+      const int64_t last = timestamp_of_event_ending_at(options_.log_path, c.log_bytes);
+      if (last >= 0) pacer_.not_before(last + 1);
+    }
   } else {
     validate_config(config_);
     run_id_ = options_.run_id.empty() ? default_run_id(config_) : options_.run_id;

@@ -81,6 +81,17 @@ TEST(BusPacer, UnpacedIsReadyTimeAndNeverGoesBack) {
   EXPECT_EQ(pacer.schedule(600, 1), 700);  // never before the message scheduled before it
 }
 
+TEST(BusPacer, NotBeforeHoldsBackTheNextMessage) {
+  // A resumed run whose log's last stamp is ahead of the clock: its messages
+  // follow that stamp, then the usual 10,000 us apart.
+  BusPacer pacer(messages_only(100, 1));
+  pacer.not_before(5'000'000);
+  EXPECT_EQ(pacer.schedule(1'000'000, 1), 5'000'000);
+  EXPECT_EQ(pacer.schedule(1'000'000, 1), 5'010'000);
+  pacer.not_before(4'000'000);  // earlier than what is booked: no effect
+  EXPECT_EQ(pacer.schedule(1'000'000, 1), 5'020'000);
+}
+
 TEST(BusPacer, RefusesBadParameters) {
   EXPECT_THROW(BusPacer(messages_only(-1, 1)), std::invalid_argument);
   EXPECT_THROW(BusPacer(messages_only(100, 0.5)), std::invalid_argument);
