@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # How many events of a live robozoo-evolve run does lcm-logger 1.3.1 lose under
-# each pacing of the bus: the default (one message every 10 ms and 1 MB/s), bytes
+# each pacing of the bus: the default (one message every 20 ms and 1 MB/s), bytes
 # only (--bus-message-rate 0: small poses go out 64 kB at once, past LCM's queue
 # of 31 messages) and none? Each trial runs in a private network namespace
 # (unshare -rn, no root needed): lcm-logger records the bus while robozoo-evolve
@@ -22,7 +22,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # name | lcm-logger's URL suffix | evolve's pacing options
 variants=(
-  "default (100 messages/s, 1 MB/s)||"
+  "default (50 messages/s, 1 MB/s)||"
   "bytes only (--bus-message-rate 0)||--bus-message-rate 0"
   "unpaced||--bus-rate 0 --bus-message-rate 0"
 )

@@ -23,7 +23,7 @@ namespace robozoo {
 struct BusPacing {
   double bytes_per_second = 1e6;    ///< sustained byte rate (bytes/s); 0: no byte limit
   double burst_bytes = 64e3;        ///< bytes that may go out at once (bytes)
-  double messages_per_second = 100; ///< sustained message rate (messages/s); 0: no message limit
+  double messages_per_second = 50;  ///< sustained message rate (messages/s); 0: no message limit
   double burst_messages = 1;        ///< messages that may go out at once (count, >= 1)
 };
 

@@ -18,7 +18,7 @@ using namespace robozoo::testing;
 
 
 TEST(EvolveLive, LiveRunIsRecordedCompletelyByLcmLogger) {
-  // At the default pacing (evolve/io/bus_pacer.hpp: one message every 10 ms, so
+  // At the default pacing (evolve/io/bus_pacer.hpp: one message every 20 ms, so
   // LCM's queue of 31 for lcm-logger's subscription never fills) and the default
   // --pose-every, lcm-logger records every event: no attempt is repeated. A
   // missing, changed, extra, repeated or reordered event fails, and so does any
