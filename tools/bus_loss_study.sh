@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Does lcm-logger 1.3.1 still lose events of a live robozoo-evolve run when its
-# socket buffer is larger (recv_buf_size), or when evolve publishes more slowly
-# (--bus-rate)? Each trial runs in a private network namespace (unshare -rn, no
-# root needed): lcm-logger records the bus while robozoo-evolve publishes a run at
-# the default --pose-every (4); robozoo-log bus then counts what the recording
-# lacks. Prints one line per trial and a table per variant.
+# How many events of a live robozoo-evolve run does lcm-logger 1.3.1 lose under
+# each pacing of the bus: the default (one message every 20 ms and 1 MB/s), bytes
+# only (--bus-message-rate 0: small poses go out 64 kB at once, past LCM's queue
+# of 31 messages) and none? Each trial runs in a private network namespace
+# (unshare -rn, no root needed): lcm-logger records the bus while robozoo-evolve
+# publishes a run at the default --pose-every (4); robozoo-log bus then counts
+# what the recording lacks. Prints one line per trial and a table per variant.
 #
 #   tools/bus_loss_study.sh [TRIALS]      # default 5 trials per variant
 set -euo pipefail
@@ -19,18 +20,16 @@ command -v lcm-logger >/dev/null || { echo "bus_loss_study: lcm-logger is missin
 url="udpm://239.255.76.67:7667?ttl=0"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# name | lcm-logger's URL suffix | evolve's --bus-rate (bytes/s)
+# name | lcm-logger's URL suffix | evolve's pacing options
 variants=(
-  "default (1 MB/s, default buffer)||1000000"
-  "logger recv_buf_size 8 MB|&recv_buf_size=8388608|1000000"
-  "--bus-rate 250 kB/s||250000"
-  "--bus-rate 250 kB/s + 8 MB buffer|&recv_buf_size=8388608|250000"
-  "unpaced (--bus-rate 0)||0"
+  "default (50 messages/s, 1 MB/s)||"
+  "bytes only (--bus-message-rate 0)||--bus-message-rate 0"
+  "unpaced||--bus-rate 0 --bus-message-rate 0"
 )
 printf "%-38s %6s %9s %9s %9s %s\n" variant trial sent missing pose_json_kB note
 declare -A lost_trials total_missing
 for v in "${variants[@]}"; do
-  IFS='|' read -r name suffix rate <<<"$v"
+  IFS='|' read -r name suffix pacing <<<"$v"
   lost_trials[$name]=0
   total_missing[$name]=0
   for t in $(seq 1 "$trials"); do
@@ -38,7 +37,7 @@ for v in "${variants[@]}"; do
     unshare -rn sh -c "ip link set lo up && ip route add 224.0.0.0/4 dev lo && \
       (lcm-logger -f --lcm-url='$url$suffix' '$d/bus.lcmlog' >/dev/null 2>&1 & L=\$!; sleep 1; \
        $bin/robozoo-evolve --log '$d/own.lcmlog' --seed $((t + 100)) --population 24 --generations 4 \
-         --steps 1000 --workers 1 --quiet --lcm-url '$url' --bus-rate $rate >'$d/evolve.txt' 2>&1; \
+         --steps 1000 --workers 1 --quiet --lcm-url '$url' $pacing >'$d/evolve.txt' 2>&1; \
        sleep 1; kill -INT \$L; wait \$L)" || { echo "trial failed"; cat "$d/evolve.txt"; exit 1; }
     out=$($bin/robozoo-log bus "$d/own.lcmlog" "$d/bus.lcmlog" --json || true)
     sent=$(sed -E 's/.*"sent":([0-9]+).*/\1/' <<<"$out")

@@ -56,8 +56,15 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--pose-every", o.pose_every, "publish every k-th step of a new champion's trajectory")
       ->check(CLI::Range(1, 1000000000));
   app.add_option("--bus-rate", o.bus_rate,
-                 "live publishing's sustained rate in bytes/s after a 64 kB burst (0: unpaced); UDP multicast "
-                 "drops what a subscriber's receive buffer cannot hold")
+                 "live publishing's sustained rate in bytes/s after a 64 kB burst (0: no byte limit); UDP "
+                 "multicast drops what a subscriber's receive buffer cannot hold")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--bus-message-rate", o.bus_message_rate,
+                 "live publishing's rate in messages/s, one at a time (0: no message limit); LCM drops what "
+                 "reaches a subscriber that holds 31 undispatched messages (its default queue: lcm-logger's). "
+                 "The log's time stamps follow the same schedule, bus or not, so lcm-logplayer replays a log "
+                 "as it was published")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_flag("--publish-all", o.publish_all, "publish every genome and morphology, not only champions");
@@ -140,7 +147,8 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
       return 2;
     }
     if (app.count("--lcm-url")) opts.lcm_url = o.lcm_url.empty() ? kDefaultLcmUrl : o.lcm_url;
-    opts.bus_bytes_per_second = o.bus_rate;
+    opts.bus_pacing.bytes_per_second = o.bus_rate;
+    opts.bus_pacing.messages_per_second = o.bus_message_rate;
     const std::string id = o.run_id.empty() ? default_run_id(config) : o.run_id;
     opts.log_path = o.log_path.empty() ? "runs/" + id + ".lcmlog" : o.log_path;
     const auto parent = std::filesystem::path(opts.log_path).parent_path();

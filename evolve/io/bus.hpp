@@ -1,5 +1,7 @@
 #pragma once
 // Live publishing on an LCM bus. Optional and lossy by nature (the log is the record).
+// When each message goes out is BusPacer's schedule (evolve/io/bus_pacer.hpp).
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,24 +18,17 @@ inline constexpr const char* kDefaultLcmUrl = "udpm://239.255.76.67:7667?ttl=0";
 /// a champion's pose stream: a busy machine lost poses (measured with robozoo-view).
 inline constexpr int kSubscriberQueueMessages = 10000;
 
-/// Pacing of live publishing: UDP multicast drops packets when a burst overflows
-/// a subscriber's receive buffer (a champion's pose stream is ~1,000 messages at
-/// once), so the bus sends at most `bytes_per_second` after a `burst_bytes` burst.
-struct BusParams {
-  double bytes_per_second = 1e6;  ///< sustained rate (bytes/s); 0: unpaced. With the default
-                                  ///< 208 KiB socket buffer a subscriber may stall ~0.2 s
-  double burst_bytes = 64e3;      ///< sent at once before pacing starts (bytes)
-};
-
 class Bus {
  public:
   /// Connects to `url`; throws std::runtime_error naming the URL if LCM cannot start.
-  explicit Bus(const std::string& url, BusParams params = {});
+  explicit Bus(const std::string& url);
   ~Bus();
   Bus(const Bus&) = delete;
   Bus& operator=(const Bus&) = delete;
-  /// Publishes raw bytes; returns false (and counts it) when LCM reports a failure.
-  bool publish(const std::string& channel, const std::vector<uint8_t>& data);
+  /// Waits until `send_at_us` (us since the Unix epoch, the clock of now_us();
+  /// 0 or a past time: at once), then publishes raw bytes; returns false (and
+  /// counts it) when LCM reports a failure.
+  bool publish(const std::string& channel, const std::vector<uint8_t>& data, int64_t send_at_us = 0);
   int64_t failures() const { return failures_; }    ///< messages LCM refused (count)
   int64_t published() const { return published_; }  ///< messages LCM accepted (count)
   int64_t bytes() const { return bytes_; }          ///< their payload bytes (bytes)
@@ -46,9 +41,6 @@ class Bus {
   int64_t failures_ = 0;
   int64_t published_ = 0;
   int64_t bytes_ = 0;
-  BusParams params_;
-  double tokens_ = 0;       // bytes that may be sent now
-  double last_refill_ = 0;  // (s, steady clock)
 };
 
 }  // namespace robozoo

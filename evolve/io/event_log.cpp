@@ -5,7 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
@@ -179,6 +181,31 @@ LogContents parse_event_log(const uint8_t* data, size_t len) {
 LogContents read_event_log(const std::string& path) {
   MappedFile f(path);
   return parse_event_log(f.data(), f.size());
+}
+
+int64_t timestamp_of_event_ending_at(const std::string& path, int64_t end) {
+  constexpr int64_t kWindow = 16 << 20;
+  constexpr int64_t kHeader = 4 + 8 + 8 + 4 + 4;  // sync, eventnum, timestamp, channellen, datalen
+  if (end < kHeader) return -1;
+  const int64_t from = std::max<int64_t>(0, end - kWindow);
+  std::vector<uint8_t> b(static_cast<size_t>(end - from));
+  FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return -1;
+  const bool ok = std::fseek(f, static_cast<long>(from), SEEK_SET) == 0 && std::fread(b.data(), 1, b.size(), f) == b.size();
+  std::fclose(f);
+  if (!ok) return -1;
+  const auto be = [&](int64_t at, int n) {
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v = (v << 8) | b[static_cast<size_t>(at + i)];
+    return v;
+  };
+  for (int64_t p = static_cast<int64_t>(b.size()) - kHeader; p >= 0; --p) {
+    if (be(p, 4) != kSyncWord) continue;
+    const int64_t channel_len = static_cast<int64_t>(be(p + 20, 4)), data_len = static_cast<int64_t>(be(p + 24, 4));
+    if (p + kHeader + channel_len + data_len == static_cast<int64_t>(b.size()))
+      return static_cast<int64_t>(be(p + 12, 8));
+  }
+  return -1;
 }
 
 int64_t now_us() {

@@ -70,6 +70,12 @@ LogContents read_event_log(const std::string& path);
 /// The same reader on the bytes of a log already in memory.
 LogContents parse_event_log(const uint8_t* data, size_t len);
 
+/// The time stamp (us) of the event that ends exactly at byte `end` of the log
+/// at `path`, found by searching back at most 16 MiB from there; -1 when there
+/// is none (an empty log, an event larger than that, or bytes that are not
+/// events). What a resumed run's next stamp must not precede.
+int64_t timestamp_of_event_ending_at(const std::string& path, int64_t end);
+
 /// Current time in microseconds since the Unix epoch (for utime fields).
 int64_t now_us();
 

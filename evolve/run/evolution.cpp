@@ -56,7 +56,7 @@ std::string format_progress(const ProgressReport& r) {
 }
 
 Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Evaluator& evaluator)
-    : config_(config), options_(options), evaluator_(evaluator) {
+    : config_(config), options_(options), evaluator_(evaluator), pacer_(options.bus_pacing) {
   if (options_.log_path.empty()) throw std::runtime_error("no log path given");
   if (options_.overlap_trajectory && evaluator_.simulates_in_process())
     throw std::invalid_argument(
@@ -112,7 +112,13 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     }
     checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint,
                                                             generations_done());
-    if (!finished_) log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
+    if (!finished_) {
+      log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
+      // Stamps run ahead of the clock while messages wait for their turn: the
+      // log's go on from its last one, never back.
+      const int64_t last = timestamp_of_event_ending_at(options_.log_path, c.log_bytes);
+      if (last >= 0) pacer_.not_before(last + 1);
+    }
   } else {
     validate_config(config_);
     run_id_ = options_.run_id.empty() ? default_run_id(config_) : options_.run_id;
@@ -123,9 +129,7 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     save_checkpoint();
   }
   if (!options_.lcm_url.empty() && !finished_) {
-    BusParams bp;
-    bp.bytes_per_second = options_.bus_bytes_per_second;
-    bus_ = std::make_unique<Bus>(options_.lcm_url, bp);
+    bus_ = std::make_unique<Bus>(options_.lcm_url);
   }
   start_evaluations_ = evaluations_;
   start_generation_ = generations_done();
@@ -143,7 +147,13 @@ int Evolution::generations_done() const { return finished_ ? config_.generations
 
 void Evolution::emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime) {
   log_->write(channel, bytes, utime);
-  if (bus_) bus_->publish(channel, bytes);
+  if (bus_) bus_->publish(channel, bytes, utime);
+}
+
+template <class M>
+void Evolution::emit_message(const char* channel, M m) {
+  m.utime = pacer_.schedule(now_us(), static_cast<size_t>(m.getEncodedSize()));
+  emit(channel, encode_message(m), m.utime);
 }
 
 void Evolution::save_checkpoint() { checkpoint_writer_->write(make_checkpoint(), generations_done()); }
@@ -168,7 +178,7 @@ Checkpoint Evolution::make_checkpoint() {
 
 void Evolution::emit_poses(std::vector<pose_t>& poses) {
   for (pose_t& p : poses) {
-    p.utime = now_us();
+    p.utime = pacer_.schedule(now_us(), static_cast<size_t>(p.getEncodedSize()));
     emit(kChannelPose, encode_message(p), p.utime);
   }
 }
@@ -236,8 +246,7 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   auto tm = std::chrono::steady_clock::now();
   const auto emit_run = [&] {
     tm = std::chrono::steady_clock::now();
-    const int64_t t_run = now_us();
-    emit(kChannelRun, encode_message(make_run_message(run_id_, config_, t_run)), t_run);
+    emit_message(kChannelRun, make_run_message(run_id_, config_, 0));
     timing.messages += seconds_since(tm);
   };
   // With the previous generation's champion still simulating, its poses come
@@ -330,19 +339,13 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
 
   tm = std::chrono::steady_clock::now();
   s.generation_seconds = seconds_since(t0);
-  const int64_t t_gen = now_us();
-  emit(kChannelGeneration, encode_message(make_generation_message(run_id_, s, t_gen)), t_gen);
+  emit_message(kChannelGeneration, make_generation_message(run_id_, s, 0));
   for (size_t k = 0; k < published.size(); ++k) {
     const size_t i = published[k];
     const EvalSummary& r = results[i];
-    const int64_t t = now_us();
-    emit(kChannelGenome,
-         encode_message(make_genome_message(run_id_, gen, genomes[i], species_ids[k],
-                                            GenomeScore{r.fitness, r.r, r.d, r.outcome}, t)),
-         t);
-    const int64_t t2 = now_us();
-    emit(kChannelMorphology, encode_message(make_morphology_message(run_id_, gen, genomes[i].id, robots[k], t2)),
-         t2);
+    emit_message(kChannelGenome, make_genome_message(run_id_, gen, genomes[i], species_ids[k],
+                                                     GenomeScore{r.fitness, r.r, r.d, r.outcome}, 0));
+    emit_message(kChannelMorphology, make_morphology_message(run_id_, gen, genomes[i].id, robots[k], 0));
   }
   timing.messages += seconds_since(tm);
   tm = std::chrono::steady_clock::now();
@@ -351,14 +354,14 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   if (bus_) {
     // How publishing went, on the bus only (the log is the record).
     bus_status_t b{};
-    b.utime = now_us();
     b.run_id = run_id_;
     b.generation = gen;
     b.messages_published = messages_published();
     b.bytes_published = bus_->bytes() - bus_status_bytes_;
     b.publish_failures = bus_->failures();
+    b.utime = pacer_.schedule(now_us(), static_cast<size_t>(b.getEncodedSize()));  // it takes its turn too
     const std::vector<uint8_t> bytes = encode_message(b);
-    if (bus_->publish(kChannelBus, bytes)) {
+    if (bus_->publish(kChannelBus, bytes, b.utime)) {
       ++bus_statuses_;
       bus_status_bytes_ += static_cast<int64_t>(bytes.size());
     }

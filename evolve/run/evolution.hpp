@@ -12,6 +12,7 @@
 #include "evolve/config/run_config.hpp"
 #include "evolve/core/rng.hpp"
 #include "evolve/io/bus.hpp"
+#include "evolve/io/bus_pacer.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/neat/population.hpp"
@@ -26,7 +27,8 @@ struct EvolveOptions {
   std::string log_path;         ///< the run's LCM log
   std::string checkpoint_path;  ///< empty: log_path + ".checkpoint"
   std::string lcm_url;          ///< empty: no live publishing
-  double bus_bytes_per_second = 1e6;  ///< live publishing's sustained rate (bytes/s); 0: unpaced (BusParams)
+  BusPacing bus_pacing;         ///< when messages go out on the bus, and so their time stamps in the
+                                ///< log, bus or not (BusPacer)
   bool resume = false;          ///< continue from the checkpoint
   bool force_version = false;   ///< resume a checkpoint written by another robozoo version anyway
   int32_t generations = 0;      ///< with resume: run to this many generations, at least the checkpoint's
@@ -128,6 +130,9 @@ class Evolution {
 
  private:
   void emit(const char* channel, const std::vector<uint8_t>& bytes, int64_t utime);
+  /// Stamps `m` (utime) with its time on the bus (BusPacer), then emits it.
+  template <class M>
+  void emit_message(const char* channel, M m);
   void save_checkpoint();
   /// overlap_trajectory: writes the previous generation's poses once its
   /// re-simulation ends, then that generation's checkpoint (s spent waiting and writing).
@@ -154,6 +159,7 @@ class Evolution {
   std::unique_ptr<Population> population_;
   std::optional<EventLogWriter> log_;
   std::unique_ptr<Bus> bus_;
+  BusPacer pacer_;                 // every message's time on the bus and in the log
   std::unique_ptr<CheckpointWriter> checkpoint_writer_;
   int64_t evaluations_ = 0;
   int64_t start_evaluations_ = 0;  // evaluations_ when this process took the run over

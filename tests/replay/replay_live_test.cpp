@@ -28,9 +28,10 @@ testing::Outcome recorded(const std::string& command, const std::string& recordi
   return run_shell("timeout 120 unshare -n sh -c \"" + script + "\"");
 }
 
-/// lcm-logger 1.3.1 now and then loses a stretch of a burst in user space (the
-/// kernel's counters show every datagram delivered; see tests/evolve/app/
-/// evolve_live_test.cpp). So a recording with fewer robozoo events than
+/// lcm-logger 1.3.1 now and then loses a stretch of a burst in user space: LCM
+/// keeps at most 31 undispatched messages for its subscription and drops what
+/// arrives beyond (README, "What a log holds"), and --speed 50 sends a
+/// trajectory's poses under a millisecond apart. So a recording with fewer robozoo events than
 /// `expected` is made again, up to `attempts` times; the checks then run on the
 /// last recording, and a publisher that really loses or adds events fails them.
 testing::Outcome recorded_completely(const std::string& command, const std::string& recording, size_t expected,

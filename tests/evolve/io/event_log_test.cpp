@@ -58,6 +58,33 @@ TEST(EventLog, ResumeCutsBackAndContinuesNumbering) {
   EXPECT_THROW(EventLogWriter::resume(dir / "a.lcmlog", 1 << 30, 0), std::runtime_error);
 }
 
+TEST(EventLog, FindsTheTimestampOfTheEventEndingAtAnOffset) {
+  TempDir dir;
+  std::vector<int64_t> ends;
+  {
+    auto log = EventLogWriter::create(dir / "a.lcmlog");
+    log.write("A", bytes(10, 1), 111);
+    log.sync();
+    ends.push_back(log.bytes());
+    // A payload that holds the sync word and a plausible header: not an event.
+    std::vector<uint8_t> tricky = {0xED, 0xA1, 0xDA, 0x01, 0, 0, 0, 0, 0, 0, 0, 9, 0, 0, 0, 0,
+                                   0, 0, 0, 0x63, 0, 0, 0, 1, 0, 0, 0, 0};
+    log.write("BB", tricky, 222);
+    log.sync();
+    ends.push_back(log.bytes());
+    log.write("C", bytes(5000, 3), 333);
+    log.sync();
+    ends.push_back(log.bytes());
+  }
+  const std::string p = dir / "a.lcmlog";
+  EXPECT_EQ(timestamp_of_event_ending_at(p, ends[0]), 111);
+  EXPECT_EQ(timestamp_of_event_ending_at(p, ends[1]), 222);
+  EXPECT_EQ(timestamp_of_event_ending_at(p, ends[2]), 333);
+  EXPECT_EQ(timestamp_of_event_ending_at(p, ends[2] - 1), -1);  // inside an event
+  EXPECT_EQ(timestamp_of_event_ending_at(p, 0), -1);
+  EXPECT_EQ(timestamp_of_event_ending_at(dir / "none.lcmlog", 100), -1);
+}
+
 TEST(EventLog, ACutLastEventOrTrailingGarbageIsReported) {
   TempDir dir;
   int64_t whole = 0;
