@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # The README's test command: install what is missing, build, run every test,
-# prove that clang and gcc -O0 builds give the same runs (tools/cross_build.sh),
 # then run every fuzz target for 10 s (tools/fuzz.sh).
 #
-#   tools/test.sh              # build/ and ctest, the cross-build check, the fuzz targets (CI)
+#   tools/test.sh              # build/ and ctest, then the fuzz targets (CI)
 #   tools/test.sh --no-fuzz    # build/ and ctest only
 #   tools/test.sh --sanitize   # the whole suite under AddressSanitizer and
 #                              # UndefinedBehaviorSanitizer, in build-sanitize/
@@ -63,7 +62,5 @@ fi
 tools/build.sh
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j"$(nproc)")
 if [ "$mode" != "--no-fuzz" ]; then
-  # The same bits from other builds: clang and gcc -O0 runs checked by this build and back.
-  tools/cross_build.sh
   tools/fuzz.sh 10
 fi
