@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <sched.h>
 #include <time.h>
@@ -9,6 +10,7 @@
 
 #include "runlog/log_source.hpp"
 #include "runlog/selection.hpp"
+#include "render/video_quality.hpp"
 #include "render/video_subject.hpp"
 
 namespace robozoo::render {
@@ -22,6 +24,12 @@ double process_cpu_seconds() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+long long file_bytes(const std::string& path) {
+  std::error_code ec;
+  const auto n = std::filesystem::file_size(path, ec);
+  if (ec) throw std::runtime_error(path + ": " + ec.message());
+  return static_cast<long long>(n);
 }
 int usable_cores() {
   cpu_set_t set;
@@ -89,16 +97,33 @@ BenchFigures run_bench(const BenchOptions& o) {
   }
   const std::string dir = o.scratch.empty() ? "/tmp" : o.scratch;
   const std::string path = dir + "/robozoo-render-bench-" + std::to_string(::getpid()) + ".mp4";
-  // Encoding: the same frames again (RGB -> yuv420p, x264, MP4).
-  {
+  // Encoding: the same frames again (RGB -> yuv420p, x264, MP4), with the
+  // settings given and with --fast's, each file then decoded and compared with
+  // the frames.
+  const EncoderOptions fast = fast_encoder(o.video.encoder);
+  auto encode = [&](const EncoderOptions& e, BenchFigures::Encoding& r) {
+    r.preset = e.preset;
+    r.threads = e.threads;
     const auto t0 = std::chrono::steady_clock::now();
     const double c0 = process_cpu_seconds();
-    VideoEncoder enc(path, o.video.encoder);
+    VideoEncoder enc(path, e);
     for (int i = 0; i < o.frames; ++i) enc.add_frame(frames[static_cast<size_t>(i) % frames.size()]);
     enc.finish();
-    f.encode_fps = o.frames / seconds_since(t0);
-    f.encode_cpu_ms = 1e3 * (process_cpu_seconds() - c0) / o.frames;
-  }
+    r.wall_seconds = seconds_since(t0);
+    r.cpu_ms = 1e3 * (process_cpu_seconds() - c0) / o.frames;
+    r.bytes = file_bytes(path);
+    const VideoQuality q = measure_quality(path, frames);
+    if (q.frames != o.frames)
+      throw std::runtime_error("bench: decoded " + std::to_string(q.frames) + " frames of " + std::to_string(o.frames));
+    r.psnr_y = q.psnr_y;
+    r.psnr = q.psnr;
+    r.ssim_y = q.ssim_y;
+  };
+  f.encoded_frames = o.frames;
+  encode(o.video.encoder, f.given);
+  encode(fast, f.fast);
+  f.encode_fps = o.frames / f.given.wall_seconds;
+  f.encode_cpu_ms = f.given.cpu_ms;
   // The baseline, measured in the same run: the whole video drawn and encoded in
   // turn on one thread (how videos were made before the two overlapped; the same bytes).
   {
@@ -122,6 +147,19 @@ BenchFigures run_bench(const BenchOptions& o) {
     f.video_wall_seconds = seconds_since(t0);
     f.video_cpu_seconds = process_cpu_seconds() - c0;
     f.video_frames = s.frames;
+    f.video_bytes = file_bytes(path);
+  }
+  // The same with --fast's encoder.
+  {
+    VideoOptions v = o.video;
+    v.encoder = fast;
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = process_cpu_seconds();
+    const VideoSubject again = make_video_subject(*pick.run, *pick.genome);
+    render_video(again, v, path, {}, &stage);
+    f.fast_video_wall_seconds = seconds_since(t0);
+    f.fast_video_cpu_seconds = process_cpu_seconds() - c0;
+    f.fast_video_bytes = file_bytes(path);
   }
   std::remove(path.c_str());
   return f;
@@ -151,6 +189,29 @@ void print(std::ostream& out, const BenchFigures& f) {
                 f.serial_wall_seconds, f.serial_cpu_seconds,
                 f.serial_wall_seconds > 0 ? f.serial_cpu_seconds / f.serial_wall_seconds : 0.0,
                 f.video_wall_seconds > 0 ? f.serial_wall_seconds / f.video_wall_seconds : 0.0);
+  out << buf;
+  const BenchFigures::Encoding& g = f.given;
+  const BenchFigures::Encoding& q = f.fast;
+  auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+  auto threads = [](int t) { return t == 0 ? std::string("libx264's choice of threads") : std::to_string(t) + " thread" + (t == 1 ? "" : "s"); };
+  std::snprintf(buf, sizeof buf,
+                "encoders         the %d timed frames encoded both ways, in turn:\n"
+                "  default        %s, %s: %.2f s wall, %.1f ms of CPU a frame, %lld bytes, "
+                "PSNR %.2f dB (luma %.2f), SSIM %.4f\n"
+                "  --fast         %s, %s: %.2f s wall, %.1f ms of CPU a frame, %lld bytes, "
+                "PSNR %.2f dB (luma %.2f), SSIM %.4f\n"
+                "  fast/default   wall %.2fx, CPU %.2fx, size %.2fx, PSNR %+.2f dB, SSIM %+.4f\n"
+                "fast video       the champion video with --fast side by side: %.1f s wall (default %.1f s: %.2fx), "
+                "CPU %.1f s (%.1f ms a frame; default %.1f ms), %lld bytes (default %lld: %.2fx)\n",
+                f.encoded_frames,
+                g.preset.c_str(), threads(g.threads).c_str(), g.wall_seconds, g.cpu_ms, g.bytes, g.psnr, g.psnr_y,
+                g.ssim_y, q.preset.c_str(), threads(q.threads).c_str(), q.wall_seconds, q.cpu_ms, q.bytes, q.psnr,
+                q.psnr_y, q.ssim_y, ratio(q.wall_seconds, g.wall_seconds), ratio(q.cpu_ms, g.cpu_ms),
+                ratio(static_cast<double>(q.bytes), static_cast<double>(g.bytes)), q.psnr - g.psnr, q.ssim_y - g.ssim_y,
+                f.fast_video_wall_seconds, f.video_wall_seconds, ratio(f.fast_video_wall_seconds, f.video_wall_seconds),
+                f.fast_video_cpu_seconds, 1e3 * f.fast_video_cpu_seconds / n, 1e3 * f.video_cpu_seconds / n,
+                f.fast_video_bytes, f.video_bytes,
+                ratio(static_cast<double>(f.fast_video_bytes), static_cast<double>(f.video_bytes)));
   out << buf;
 }
 

@@ -34,6 +34,22 @@ struct BenchFigures {
   int drawn_frames = 0;          ///< frames drawn both ways (count)
   int frames_differing = 0;      ///< of those, frames whose pixels differ between the two ways (count; 0 expected)
   double encode_cpu_ms = 0;      ///< CPU time per frame of encoding, every thread (ms)
+  /// Encoding the same timed frames with the settings given (the default) and with `--fast`'s
+  /// (fast_encoder), one after the other in this run.
+  struct Encoding {
+    std::string preset;
+    int threads = 0;             ///< libx264 threads asked for (0: its own choice)
+    double wall_seconds = 0;     ///< (s)
+    double cpu_ms = 0;           ///< CPU time per frame, every thread (ms)
+    long long bytes = 0;         ///< the MP4's size (bytes)
+    double psnr_y = 0, psnr = 0; ///< against the source frames, luma and all planes (dB)
+    double ssim_y = 0;           ///< against the source frames, luma (1: identical)
+  };
+  Encoding given, fast;
+  int encoded_frames = 0;        ///< frames encoded each way (count)
+  double fast_video_wall_seconds = 0; ///< the whole video side by side with `--fast`'s encoder (s)
+  double fast_video_cpu_seconds = 0;  ///< CPU time of every thread meanwhile (s)
+  long long video_bytes = 0, fast_video_bytes = 0; ///< the whole video's MP4 both ways (bytes)
   int cores = 0;                 ///< cores this process may run on (count)
   bool resimulated = false;      ///< the trajectory had to be re-simulated
   double resimulate_seconds = 0; ///< time spent re-simulating (s)

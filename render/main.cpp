@@ -56,8 +56,11 @@ struct VideoArgs {
   std::string preset = "veryfast";
   int threads = 1;
   int samples = 0;
+  bool fast = false;
   bool no_overlay = false, no_grid = false;
   std::string font_dir;
+  const CLI::Option* preset_option = nullptr;   // to tell a --preset given from the default
+  const CLI::Option* threads_option = nullptr;
 };
 
 void add_video_options(CLI::App* app, VideoArgs& a) {
@@ -66,9 +69,14 @@ void add_video_options(CLI::App* app, VideoArgs& a) {
   app->add_option("--speed", a.speed, "simulated seconds per second of video (1: real time)")->capture_default_str();
   app->add_option("--hold", a.hold, "show the last frame this many seconds longer")->capture_default_str();
   app->add_option("--crf", a.crf, "x264 quality, 0-51, lower is better")->capture_default_str();
-  app->add_option("--preset", a.preset, "x264 preset")->capture_default_str();
-  app->add_option("--threads", a.threads, "encoder threads; libx264's output depends on them: 1 gives the same bytes on every machine, 0 lets "
+  a.preset_option = app->add_option("--preset", a.preset, "x264 preset")->capture_default_str();
+  a.threads_option = app->add_option("--threads", a.threads, "encoder threads; libx264's output depends on them: 1 gives the same bytes on every machine, 0 lets "
                   "libx264 choose by the machine's cores")->capture_default_str();
+  app->add_flag("--fast", a.fast,
+                std::string("faster encoding, other bytes: x264 preset ") + kFastPreset +
+                    " on libx264's own thread count (--threads 0) instead of veryfast on one thread; a larger file at "
+                    "the same --crf, and the output is no longer byte-reproducible across machines (it follows the "
+                    "cores); not with --preset or --threads");
   app->add_option("--samples", a.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
   app->add_flag("--no-overlay", a.no_overlay, "no text over the picture");
   app->add_flag("--no-grid", a.no_grid, "no grid on the ground");
@@ -86,6 +94,11 @@ VideoOptions video_options(const VideoArgs& a) {
   o.encoder.crf = a.crf;
   o.encoder.preset = a.preset;
   o.encoder.threads = a.threads;
+  if (a.fast) {
+    if (a.preset_option->count() > 0 || a.threads_option->count() > 0)
+      throw std::invalid_argument("--fast sets the x264 preset and threads itself: give --fast or --preset/--threads, not both");
+    o.encoder = fast_encoder(o.encoder);
+  }
   o.speed = a.speed;
   o.hold = a.hold;
   o.samples = a.samples;
@@ -260,6 +273,8 @@ struct BenchArgs {
 };
 
 int run_bench_command(const BenchArgs& a) {
+  if (a.video.fast)
+    throw std::invalid_argument("bench measures the encoder settings given and --fast's side by side: leave out --fast");
   BenchOptions o;
   o.log = a.log;
   o.frames = a.frames;
@@ -316,7 +331,8 @@ int main(int argc, char** argv) {
   add_video_options(lc, live.video);
 
   BenchArgs bench;
-  CLI::App* bc = app.add_subcommand("bench", "benchmark: drawing and encoding frames per second, one champion's video");
+  CLI::App* bc = app.add_subcommand("bench", "benchmark: drawing and encoding frames per second, one champion's video; "
+                                    "the encoder settings given (default: the default's) against --fast's, same frames");
   bc->add_option("log", bench.log, "robozoo-evolve log (its best champion is drawn)")->required();
   bc->add_option("--frames", bench.frames, "frames timed")->capture_default_str()->check(CLI::Range(1, 100000));
   add_video_options(bc, bench.video);

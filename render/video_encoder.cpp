@@ -33,6 +33,12 @@ void validate(const EncoderOptions& o) {
   if (o.threads < 0 || o.threads > 64) throw std::invalid_argument("encoder threads must be in [0, 64]");
 }
 
+EncoderOptions fast_encoder(EncoderOptions o) {
+  o.preset = kFastPreset;
+  o.threads = 0;
+  return o;
+}
+
 struct VideoEncoder::Impl {
   std::string path;     // the video
   std::string partial;  // written first, renamed to `path` when complete

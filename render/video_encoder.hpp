@@ -23,6 +23,14 @@ struct EncoderOptions {
 /// Throws std::invalid_argument for odd or out-of-range sizes, a bad fps or crf.
 void validate(const EncoderOptions& o);
 
+/// libx264's preset of `robozoo-render video --fast`.
+inline constexpr const char* kFastPreset = "superfast";
+
+/// `--fast`: `o` with libx264's faster preset (kFastPreset) on libx264's own
+/// thread count (threads 0, by the machine's cores). Faster and a larger file
+/// at the same crf, and the bytes then depend on the machine.
+EncoderOptions fast_encoder(EncoderOptions o);
+
 class VideoEncoder {
  public:
   /// Opens `path` (.mp4) for writing. Throws std::invalid_argument for bad

@@ -44,6 +44,26 @@ TEST(RenderBench, MeasuresBothWaysOfMakingTheVideoAndCleansUp) {
   EXPECT_GT(f.serial_wall_seconds, 0);
   EXPECT_GT(f.serial_cpu_seconds, 0);
   EXPECT_GE(f.cores, 1);
+  // The same frames encoded with the settings given and with --fast's.
+  EXPECT_EQ(f.encoded_frames, 5);
+  EXPECT_EQ(f.given.preset, "veryfast");
+  EXPECT_EQ(f.given.threads, 1);
+  EXPECT_EQ(f.fast.preset, "superfast");
+  EXPECT_EQ(f.fast.threads, 0);
+  for (const BenchFigures::Encoding* e : {&f.given, &f.fast}) {
+    EXPECT_GT(e->wall_seconds, 0);
+    EXPECT_GT(e->cpu_ms, 0);
+    EXPECT_GT(e->bytes, 0);
+    EXPECT_GT(e->psnr_y, 25.0);  // crf 23 of rendered frames: far from noise
+    EXPECT_LT(e->psnr_y, 80.0);  // and lossy
+    EXPECT_GT(e->ssim_y, 0.8);
+    EXPECT_LT(e->ssim_y, 1.0);
+  }
+  EXPECT_NE(f.given.bytes, f.fast.bytes);
+  EXPECT_GT(f.fast_video_wall_seconds, 0);
+  EXPECT_GT(f.fast_video_cpu_seconds, 0);
+  EXPECT_GT(f.video_bytes, 0);
+  EXPECT_GT(f.fast_video_bytes, 0);
   EXPECT_TRUE(std::filesystem::is_empty(scratch));
   std::ostringstream out;
   print(out, f);
@@ -51,6 +71,8 @@ TEST(RenderBench, MeasuresBothWaysOfMakingTheVideoAndCleansUp) {
   EXPECT_NE(out.str().find("cores busy"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("background drawn first"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("encoding thread alone"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("fast/default"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("superfast"), std::string::npos) << out.str();
 }
 
 }  // namespace

@@ -20,6 +20,7 @@ struct DecodedVideo {
   std::string pix_fmt;     ///< e.g. "yuv420p"
   int width = 0, height = 0;
   double fps = 0;
+  double duration = 0;     ///< the stream's duration (s), as ffprobe reports it
   std::vector<std::vector<uint8_t>> luma;  ///< every frame's Y plane, width x height
   bool moov_before_mdat = false;           ///< +faststart
 };
@@ -60,6 +61,7 @@ inline DecodedVideo decode_video(const std::string& path) {
   v.height = st->codecpar->height;
   v.pix_fmt = av_get_pix_fmt_name(static_cast<AVPixelFormat>(st->codecpar->format));
   v.fps = av_q2d(st->avg_frame_rate);
+  v.duration = st->duration != AV_NOPTS_VALUE ? st->duration * av_q2d(st->time_base) : -1;
   auto take = [&] {
     while (avcodec_receive_frame(dec, frame) == 0) {
       std::vector<uint8_t> y(static_cast<size_t>(frame->width) * frame->height);

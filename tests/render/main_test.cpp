@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "render/png_io.hpp"
 #include "tests/render/decode_video.hpp"
@@ -70,6 +71,59 @@ TEST_F(RenderCli, VideoOfTheChampion) {
   const robozoo::testing::Outcome re = cli("video " + path("run.lcmlog") + " --resimulate --size 160x90 --speed 8 -o " + path("r.mp4"));
   ASSERT_EQ(re.status, 0) << re.output;
   EXPECT_NE(re.output.find("re-simulated"), std::string::npos) << re.output;
+}
+
+std::string file_bytes(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// --fast trades the byte-reproducible default for speed: a valid H.264 MP4 of
+// the same frames and duration, other bytes; the default keeps its settings
+// (veryfast on one libx264 thread), byte for byte.
+TEST_F(RenderCli, FastVideoIsValidAndTheDefaultKeepsItsBytes) {
+  const std::string common = "video " + path("run.lcmlog") + " --size 160x90 --speed 8 -q -o ";
+  const robozoo::testing::Outcome d = cli(common + path("default.mp4"));
+  ASSERT_EQ(d.status, 0) << d.output;
+  const robozoo::testing::Outcome e = cli(common + path("explicit.mp4") + " --preset veryfast --threads 1");
+  ASSERT_EQ(e.status, 0) << e.output;
+  const robozoo::testing::Outcome f = cli(common + path("fast.mp4") + " --fast");
+  ASSERT_EQ(f.status, 0) << f.output;
+  EXPECT_EQ(file_bytes(path("default.mp4")), file_bytes(path("explicit.mp4")));
+  EXPECT_NE(file_bytes(path("default.mp4")), file_bytes(path("fast.mp4")));
+  const auto dv = render::testing::decode_video(path("default.mp4"));
+  const auto fv = render::testing::decode_video(path("fast.mp4"));
+  ASSERT_TRUE(dv.ok) << dv.error;
+  ASSERT_TRUE(fv.ok) << fv.error;
+  EXPECT_EQ(fv.codec, "h264");
+  EXPECT_EQ(fv.pix_fmt, "yuv420p");
+  EXPECT_EQ(fv.width, 160);
+  EXPECT_EQ(fv.height, 90);
+  EXPECT_TRUE(fv.moov_before_mdat);
+  EXPECT_EQ(dv.luma.size(), 13u);  // 4 s at x8 and 25 fps, plus the first frame
+  EXPECT_EQ(fv.luma.size(), dv.luma.size());
+  EXPECT_DOUBLE_EQ(fv.fps, dv.fps);
+  EXPECT_NEAR(dv.duration, 13 / 25.0, 1e-9);
+  EXPECT_DOUBLE_EQ(fv.duration, dv.duration);
+  // The same pictures, encoded another way: close, frame by frame.
+  for (size_t i = 0; i < fv.luma.size() && i < dv.luma.size(); ++i)
+    EXPECT_LT(render::testing::luma_difference(fv.luma[i], dv.luma[i]), 4.0) << "frame " << i;
+}
+
+TEST_F(RenderCli, FastRefusesThePresetAndThreadsItSets) {
+  const robozoo::testing::Outcome help = cli("video --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.output.find("--fast"), std::string::npos) << help.output;
+  EXPECT_NE(help.output.find("no longer byte-reproducible"), std::string::npos) << help.output;
+  for (const std::string extra : {"--fast --preset medium", "--preset veryfast --fast", "--fast --threads 1"}) {
+    const robozoo::testing::Outcome o = cli("video " + path("run.lcmlog") + " " + extra + " -o " + path("both.mp4"));
+    EXPECT_EQ(o.status, 2) << extra;
+    EXPECT_NE(o.output.find("give --fast or --preset/--threads, not both"), std::string::npos) << o.output;
+    EXPECT_FALSE(file_exists(path("both.mp4")));
+  }
+  const robozoo::testing::Outcome b = cli("bench " + path("run.lcmlog") + " --fast");
+  EXPECT_EQ(b.status, 2);
+  EXPECT_NE(b.output.find("leave out --fast"), std::string::npos) << b.output;
 }
 
 TEST_F(RenderCli, MissingLog) {

@@ -15,6 +15,9 @@ namespace {
 using robozoo::testing::file_exists;
 using robozoo::testing::TempDir;
 
+constexpr size_t kRecordedDefaultSize = 2037;
+constexpr uint64_t kRecordedDefaultHash = 15015131332625733045ull;
+
 Image gradient(int w, int h, int shift) {
   Image img(w, h);
   for (int y = 0; y < h; ++y)
@@ -82,6 +85,62 @@ TEST(VideoEncoder, DefaultIsOneThreadSoBytesDoNotFollowTheCores) {
     enc.finish();
   }
   EXPECT_EQ(bytes_of(dir / "default.mp4"), bytes_of(dir / "one.mp4"));
+}
+
+uint64_t fnv1a(const std::string& bytes) {
+  uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string encode_gradients(const std::string& path, const EncoderOptions& o, int frames) {
+  VideoEncoder enc(path, o);
+  for (int i = 0; i < frames; ++i) enc.add_frame(gradient(o.width, o.height, i));
+  enc.finish();
+  return bytes_of(path);
+}
+
+// The default settings keep their bytes: size and FNV-1a hash recorded with the
+// encoder as it was before --fast existed (libx264 and libswscale of this
+// machine's packages; another libx264 build may give other bytes).
+TEST(VideoEncoder, DefaultBytesAreTheRecordedOnes) {
+  TempDir dir;
+  EncoderOptions o;
+  o.width = 64;
+  o.height = 48;
+  const std::string bytes = encode_gradients(dir / "default.mp4", o, 12);
+  EXPECT_EQ(bytes.size(), kRecordedDefaultSize);
+  EXPECT_EQ(fnv1a(bytes), kRecordedDefaultHash);
+}
+
+// --fast: libx264's faster preset on its own thread count; everything else as given.
+TEST(VideoEncoder, FastIsTheFasterPresetOnLibx264sThreads) {
+  EncoderOptions given;
+  given.width = 64;
+  given.height = 48;
+  given.crf = 30;
+  given.fps = 30;
+  const EncoderOptions fast = fast_encoder(given);
+  EXPECT_EQ(fast.preset, "superfast");
+  EXPECT_EQ(fast.threads, 0);
+  EXPECT_EQ(fast.width, 64);
+  EXPECT_EQ(fast.height, 48);
+  EXPECT_EQ(fast.crf, 30);
+  EXPECT_EQ(fast.fps, 30);
+  TempDir dir;
+  const std::string a = encode_gradients(dir / "default.mp4", given, 12);
+  const std::string b = encode_gradients(dir / "fast.mp4", fast, 12);
+  EXPECT_NE(a, b);  // other settings, other bytes
+  const auto v = testing::decode_video(dir / "fast.mp4");
+  ASSERT_TRUE(v.ok) << v.error;
+  EXPECT_EQ(v.codec, "h264");
+  EXPECT_EQ(v.pix_fmt, "yuv420p");
+  EXPECT_EQ(v.luma.size(), 12u);
+  EXPECT_DOUBLE_EQ(v.fps, 30.0);
+  EXPECT_TRUE(v.moov_before_mdat);
 }
 
 TEST(VideoEncoder, OddSizesAndBadFrames) {
