@@ -59,8 +59,11 @@ TEST(LogStructure, TheRealLogIsProvedClean) {
   EXPECT_EQ(r.generations_proved, 4);
   ASSERT_FALSE(trajectory_records(0).empty()) << "the small run must log a trajectory";
   ASSERT_FALSE(trajectory_records(1).empty()) << "the small run must log two trajectories";
-  for (const auto& c : r.champions)
-    if (c.poses_logged > 0) EXPECT_EQ(c.poses_logged, c.poses_expected) << champion_line(c, false);
+  for (const auto& c : r.champions) {
+    if (c.poses_logged > 0) {
+      EXPECT_EQ(c.poses_logged, c.poses_expected) << champion_line(c, false);
+    }
+  }
 }
 
 TEST(LogStructure, ADeletedPoseIsNamed) {

@@ -20,7 +20,7 @@ RunSummary make_run(const std::vector<Gen>& gens) {
   RunSummary s;
   for (size_t g = 0; g < gens.size(); ++g) {
     const auto gen = static_cast<int32_t>(g);
-    s.generations.push_back({gen, gens[g].fitness, 0.0, gens[g].fitness, 100 + gen});
+    s.generations.push_back({gen, gens[g].fitness, 0.0, gens[g].fitness, 100.0 + gen});
     ChampionRecord c;
     c.generation = gen;
     c.genome = make_genome({{0, 0, 0}}, {}, 100 + gen, gen, gens[g].fitness, gens[g].outcome);

@@ -53,11 +53,17 @@ TEST(Evolution, StepTimingsSplitTheGenerationAndTheFinalWaitIsApart) {
     for (size_t g = 0; g < reports.size(); ++g) {
       const StepTimings& t = reports[g].timings;
       const bool last = g + 1 == reports.size();
-      if (!last) EXPECT_EQ(t.final_checkpoint, 0.0) << "generation " << g;
+      if (!last) {
+        EXPECT_EQ(t.final_checkpoint, 0.0) << "generation " << g;
+      }
       // In the background the last write is still going when the wait starts;
       // at once, it was written within `checkpoint` and nothing is left to wait for.
-      if (last && background) EXPECT_GT(t.final_checkpoint, 0.0);
-      if (last && !background) EXPECT_LT(t.final_checkpoint, t.checkpoint);
+      if (last && background) {
+        EXPECT_GT(t.final_checkpoint, 0.0);
+      }
+      if (last && !background) {
+        EXPECT_LT(t.final_checkpoint, t.checkpoint);
+      }
       EXPECT_DOUBLE_EQ(t.serial(), t.total - t.evaluate - t.final_checkpoint);
       EXPECT_GE(t.serial() + 1e-9, t.messages + t.trajectory + t.breeding + t.checkpoint) << "generation " << g;
       EXPECT_GT(t.evaluate, 0.0);
