@@ -12,7 +12,7 @@
 
 namespace robozoo {
 
-void simulate_bare(const Robot& robot, const SimParams& params, int steps) {
+long long simulate_bare(const Robot& robot, const SimParams& params, int steps) {
   check_robot(robot);
   check_sim_params(params);
   OdeWorld world(robot, params);
@@ -24,13 +24,16 @@ void simulate_bare(const Robot& robot, const SimParams& params, int steps) {
   }
   std::vector<Contact> contacts;
   std::vector<uint8_t> touching, on_ground;
+  long long total = 0;
   dRandSetSeed(params.ode_seed);
   for (int i = 0; i < steps; ++i) {
     finder.find(world, params, contacts, touching, on_ground);
+    total += static_cast<long long>(contacts.size());
     add_contact_joints(world, params, contacts);
     dWorldQuickStep(world.world(), params.dt);
     dJointGroupEmpty(world.contact_group());
   }
+  return total;
 }
 
 }  // namespace robozoo

@@ -30,16 +30,20 @@ void ContactFinder::find(const OdeWorld& world, const SimParams& params, std::ve
   dContactGeom buf[64];
   // Ground: the same test as dCollideSpherePlane (depth = r - z >= 0), so that
   // skipping dCollide never drops a contact ODE would report.
+  center_.resize(3 * static_cast<size_t>(n));
   for (int s = 0; s < n; ++s) {
     const dReal* p = dGeomGetPosition(world.geom(s));
-    if (radius_[s] - p[2] < 0) continue;
+    std::copy(p, p + 3, &center_[3 * s]);
+  }
+  for (int s = 0; s < n; ++s) {
+    if (radius_[s] - center_[3 * s + 2] < 0) continue;
     const int k = dCollide(world.geom(s), world.ground(), cap, buf, sizeof(dContactGeom));
     for (int c = 0; c < k; ++c) out.push_back({buf[c], s, -1});
     if (k > 0) touching[s] = on_ground[s] = 1;
   }
   for (const auto& [i, j] : pairs_) {
-    const dReal* a = dGeomGetPosition(world.geom(i));
-    const dReal* b = dGeomGetPosition(world.geom(j));
+    const double* a = &center_[3 * i];
+    const double* b = &center_[3 * j];
     const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
     const double r = radius_[i] + radius_[j];
     if (dx * dx + dy * dy + dz * dz > r * r * (1 + 1e-12)) continue;  // dCollide decides the rest

@@ -38,6 +38,7 @@ class ContactFinder {
  private:
   std::vector<std::pair<int, int>> pairs_;
   std::vector<double> radius_;
+  mutable std::vector<double> center_;  // scratch: each sphere's centre, read once per find
 };
 
 /// Creates one soft contact joint per contact in the world's contact group

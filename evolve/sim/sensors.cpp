@@ -20,6 +20,8 @@ void read_sensors(const Robot& robot, const SimParams& p,
                   const std::vector<double>& angles, const std::vector<int>& joint_of_sphere,
                   double time, std::vector<double>& out) {
   out.resize(robot.sensors.size());
+  double time_value = 0.0;  // one value for every time sensor of this instant, computed once
+  bool time_done = false;
   for (size_t k = 0; k < robot.sensors.size(); ++k) {
     const Sensor& s = robot.sensors[k];
     switch (s.type) {
@@ -31,7 +33,13 @@ void read_sensors(const Robot& robot, const SimParams& p,
         out[k] = range > 0 ? angles[j] / range : 0.0;
         break;
       }
-      case SensorType::Time: out[k] = time_sensor_value(time, p); break;
+      case SensorType::Time:
+        if (!time_done) {
+          time_value = time_sensor_value(time, p);
+          time_done = true;
+        }
+        out[k] = time_value;
+        break;
     }
   }
 }

@@ -32,14 +32,16 @@ std::vector<double> motor_torque_limits(const Robot& robot, const SimParams& p) 
 }
 
 void apply_servos(const OdeWorld& world, const Robot& robot, const std::vector<double>& outputs,
-                  const std::vector<double>& limits, const SimParams& p) {
+                  const std::vector<double>& angles, const SimParams& p) {
   for (size_t k = 0; k < robot.joints.size(); ++k) {
     const Joint& j = robot.joints[k];
-    const dJointID h = world.hinge(static_cast<int>(k));
     const double target = outputs[j.neuron] * j.range;
-    dJointSetHingeParam(h, dParamVel, servo_speed(target, dJointGetHingeAngle(h), p));
-    dJointSetHingeParam(h, dParamFMax, limits[k]);
+    dJointSetHingeParam(world.hinge(static_cast<int>(k)), dParamVel, servo_speed(target, angles[k], p));
   }
+}
+
+void set_servo_torque_limits(const OdeWorld& world, const std::vector<double>& limits) {
+  for (int k = 0; k < world.num_joints(); ++k) dJointSetHingeParam(world.hinge(k), dParamFMax, limits[k]);
 }
 
 }  // namespace robozoo

@@ -29,8 +29,14 @@ std::vector<double> joint_body_moments(const Robot& robot);
 /// Torque limits (N m) per joint: motor_strength * gravity * body moment.
 std::vector<double> motor_torque_limits(const Robot& robot, const SimParams& params);
 
-/// Sets every hinge's motor towards targets[i] = outputs[neuron] * range.
+/// Sets every hinge's motor speed towards targets[i] = outputs[neuron] * range,
+/// from the hinges' current angles (rad, robot.joints order: what
+/// dJointGetHingeAngle reads at this instant). The torque limits are set once
+/// by set_servo_torque_limits.
 void apply_servos(const OdeWorld& world, const Robot& robot, const std::vector<double>& neuron_outputs,
-                  const std::vector<double>& torque_limits, const SimParams& params);
+                  const std::vector<double>& angles, const SimParams& params);
+
+/// Sets every hinge's motor torque limit (N m, robot.joints order).
+void set_servo_torque_limits(const OdeWorld& world, const std::vector<double>& torque_limits);
 
 }  // namespace robozoo

@@ -1,7 +1,7 @@
 #include "evolve/sim/simulation.hpp"
 
-#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <stdexcept>
 #include <string>
 
@@ -19,7 +19,11 @@
 namespace robozoo {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+double thread_cpu_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 Eigen::Vector3d vec(const dReal* p) { return {p[0], p[1], p[2]}; }
 
@@ -61,6 +65,8 @@ struct Simulation::Impl {
     for (size_t k = 0; k < robot.joints.size(); ++k) joint_of_sphere[robot.joints[k].sphere] = static_cast<int>(k);
     // dRandInt drives quickstep's constraint reordering; its seed is process-global,
     // so each simulation keeps its own and installs it around every step.
+    // The motors' torque limits hold for the whole episode; only their speeds change.
+    set_servo_torque_limits(world, limits);
     dRandSetSeed(rand_seed);
     // The initial state: contacts found (not yet joints) so touch sensors read true values.
     finder.find(world, p, contacts, state.sphere_touching, on_ground);
@@ -94,12 +100,12 @@ struct Simulation::Impl {
 
   bool step() {
     if (done) return false;
-    const auto t0 = timing_on ? Clock::now() : Clock::time_point{};
+    const double t0 = timing_on ? thread_cpu_seconds() : 0.0;
     // Controller: sensors (read after the previous step) -> CTRNN -> servo commands.
     prev_outputs = ctrnn.outputs();
     ctrnn.step(state.sensor_value.data(), p.dt);
-    apply_servos(world, robot, ctrnn.outputs(), limits, p);
-    const auto t1 = timing_on ? Clock::now() : Clock::time_point{};
+    apply_servos(world, robot, ctrnn.outputs(), angles, p);  // angles: read by observe() at this instant
+    const double t1 = timing_on ? thread_cpu_seconds() : 0.0;
     // Physics.
     finder.find(world, p, contacts, state.sphere_touching, on_ground);
     add_contact_joints(world, p, contacts);
@@ -107,7 +113,7 @@ struct Simulation::Impl {
     dWorldQuickStep(world.world(), p.dt);
     rand_seed = dRandGetSeed();
     dJointGroupEmpty(world.contact_group());
-    const auto t2 = timing_on ? Clock::now() : Clock::time_point{};
+    const double t2 = timing_on ? thread_cpu_seconds() : 0.0;
     // Bookkeeping.
     ++state.step;
     state.time = state.step * p.dt;
@@ -140,10 +146,11 @@ struct Simulation::Impl {
       done = true;
     }
     if (timing_on) {
-      const auto t3 = Clock::now();
-      timing.controller += std::chrono::duration<double>(t1 - t0).count();
-      timing.physics += std::chrono::duration<double>(t2 - t1).count();
-      timing.bookkeeping += std::chrono::duration<double>(t3 - t2).count();
+      const double t3 = thread_cpu_seconds();
+      timing.controller += t1 - t0;
+      timing.physics += t2 - t1;
+      timing.bookkeeping += t3 - t2;
+      timing.contacts += static_cast<long long>(contacts.size());
     }
     return true;
   }

@@ -68,8 +68,12 @@ class Simulation {
   /// valid once done(), partial before (the rules judge the steps run so far).
   SimResult result() const;
 
-  /// Per-stage wall time in seconds accumulated so far (for the benchmark).
-  struct Timing { double controller = 0, physics = 0, bookkeeping = 0; };
+  /// Per-stage CPU time of the calling thread in seconds accumulated so far (for
+  /// the benchmark; the machine may be shared, and wall time would count others).
+  struct Timing {
+    double controller = 0, physics = 0, bookkeeping = 0;
+    long long contacts = 0;  ///< contact joints handed to the solver, summed over the timed steps
+  };
   Timing timing() const;
   void enable_timing(bool on);
 
@@ -83,8 +87,9 @@ SimResult simulate(const Robot& robot, const SimParams& params);
 
 /// Steps the same bodies and joints with no controller, sensors, servo or
 /// bookkeeping (joint motors held at zero speed with the same force limit), for
-/// `steps` steps: the engine's limit, used as the benchmark's baseline.
-void simulate_bare(const Robot& robot, const SimParams& params, int steps);
+/// `steps` steps: the engine's limit, used as the benchmark's baseline. Returns
+/// the contact joints handed to the solver, summed over the steps.
+long long simulate_bare(const Robot& robot, const SimParams& params, int steps);
 
 /// Stable 64-bit hash of all body positions and quaternions (exact bits).
 uint64_t pose_hash(const SimState& s);
