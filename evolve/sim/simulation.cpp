@@ -11,7 +11,7 @@
 #include "evolve/sim/ctrnn.hpp"
 #include "evolve/sim/params_check.hpp"
 #include "evolve/sim/robot_check.hpp"
-#include "evolve/fitness/rules.hpp"
+#include "evolve/sim/episode_rules.hpp"
 #include "evolve/sim/sensors.hpp"
 #include "evolve/sim/servo.hpp"
 #include "evolve/sim/world.hpp"

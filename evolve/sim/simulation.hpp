@@ -64,7 +64,7 @@ class Simulation {
   /// before the first step (throws std::logic_error after); for tests and
   /// perturbation experiments. Evaluations never call it.
   void set_body_velocity(int body, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular);
-  /// The episode's result (rules applied; precedence in evolve/fitness/rules.hpp);
+  /// The episode's result (rules applied; precedence in evolve/sim/episode_rules.hpp);
   /// valid once done(), partial before (the rules judge the steps run so far).
   SimResult result() const;
 

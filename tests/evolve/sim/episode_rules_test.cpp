@@ -1,4 +1,4 @@
-#include "evolve/fitness/rules.hpp"
+#include "evolve/sim/episode_rules.hpp"
 
 #include <gtest/gtest.h>
 
