@@ -26,7 +26,7 @@ extern "C" {
 #include "render/video_subject.hpp"
 #include "render/zoo_sheet.hpp"
 #include "evolve/core/version.hpp"
-#include "evolve/run/stop_signals.hpp"
+#include "util/stop_signals.hpp"
 
 using namespace robozoo;
 using namespace robozoo::render;

@@ -12,7 +12,7 @@
 
 #include "evolve/io/event_log.hpp"
 #include "runlog/log_index.hpp"
-#include "replay/play_clock.hpp"
+#include "runlog/play_clock.hpp"
 
 namespace robozoo {
 

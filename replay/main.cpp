@@ -21,9 +21,9 @@
 #include "replay/full_check.hpp"
 #include "replay/live_check.hpp"
 #include "evolve/config/run_config.hpp"
-#include "evolve/run/stop_signals.hpp"
+#include "util/stop_signals.hpp"
 #include "replay/live_sim.hpp"
-#include "replay/player.hpp"
+#include "runlog/player.hpp"
 #include "evolve/core/version.hpp"
 #include "runlog/progress_bar.hpp"
 

@@ -5,7 +5,7 @@
 // and started again at any time: finished trials are skipped, a stopped one is
 // resumed from its checkpoint, the others are started; --generations above the
 // trials' own extends them from their checkpoints. Each finished trial leaves its
-// compact result (evolve/analysis/run_results.hpp) in --results. Prints progress
+// compact result (study/analysis/run_results.hpp) in --results. Prints progress
 // across the whole experiment with an estimated finish time. Then: robozoo-stats DIR.
 #include <unistd.h>
 
@@ -19,13 +19,13 @@
 #include <iostream>
 #include <sstream>
 
-#include "evolve/analysis/run_results.hpp"
+#include "study/analysis/run_results.hpp"
 #include "evolve/config/run_config.hpp"
-#include "evolve/experiment/child_process.hpp"
-#include "evolve/experiment/program_path.hpp"
-#include "evolve/experiment/progress_estimate.hpp"
-#include "evolve/experiment/trial_plan.hpp"
-#include "evolve/experiment/trial_status.hpp"
+#include "study/experiment/child_process.hpp"
+#include "util/program_path.hpp"
+#include "study/experiment/progress_estimate.hpp"
+#include "study/experiment/trial_plan.hpp"
+#include "study/experiment/trial_status.hpp"
 #include "evolve/core/version.hpp"
 
 using namespace robozoo;

@@ -10,9 +10,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "evolve/analysis/initial_robots.hpp"
+#include "study/analysis/initial_robots.hpp"
 #include "evolve/core/version.hpp"
-#include "evolve/experiment/trial_plan.hpp"
+#include "study/experiment/trial_plan.hpp"
 
 using namespace robozoo;
 

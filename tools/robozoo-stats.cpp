@@ -10,9 +10,9 @@
 
 #include <iostream>
 
-#include "evolve/analysis/stats_job.hpp"
+#include "study/analysis/stats_job.hpp"
 #include "evolve/core/version.hpp"
-#include "evolve/experiment/trial_plan.hpp"
+#include "study/experiment/trial_plan.hpp"
 
 using namespace robozoo;
 

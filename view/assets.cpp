@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "evolve/experiment/program_path.hpp"
+#include "util/program_path.hpp"
 
 namespace robozoo::view {
 

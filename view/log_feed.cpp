@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "replay/player.hpp"
+#include "runlog/player.hpp"
 #include "runlog/log_index.hpp"
 #include "runlog/log_reader.hpp"
 

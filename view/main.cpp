@@ -13,7 +13,7 @@
 #include "view/log_feed.hpp"
 #include "view/server.hpp"
 #include "view/view_state.hpp"
-#include "evolve/run/stop_signals.hpp"
+#include "util/stop_signals.hpp"
 
 namespace {
 

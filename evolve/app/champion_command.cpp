@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "evolve/analysis/champion_log.hpp"
+#include "study/analysis/champion_log.hpp"
 #include "evolve/messages/build.hpp"
 
 namespace robozoo {

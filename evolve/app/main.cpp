@@ -16,7 +16,7 @@
 #include "evolve/app/eval_command.hpp"
 #include "evolve/app/mpi_command.hpp"
 #include "evolve/app/run_command.hpp"
-#include "evolve/run/stop_signals.hpp"
+#include "util/stop_signals.hpp"
 #include "evolve/parallel/mpi/mpi_session.hpp"
 #include "evolve/core/version.hpp"
 

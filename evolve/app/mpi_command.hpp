@@ -7,7 +7,7 @@
 #include <string>
 
 #include "evolve/app/run_command.hpp"
-#include "evolve/run/stop_signals.hpp"
+#include "util/stop_signals.hpp"
 #include "evolve/parallel/mpi/mpi_session.hpp"
 
 namespace robozoo {

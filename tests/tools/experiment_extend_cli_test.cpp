@@ -9,7 +9,7 @@
 
 #include <filesystem>
 
-#include "evolve/analysis/run_results.hpp"
+#include "study/analysis/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
 #include "evolve/run/checkpoint.hpp"

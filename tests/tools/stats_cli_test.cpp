@@ -1,5 +1,5 @@
 // robozoo-stats on hand-made logs with known champions: the tables come out as
-// worked out by hand (tests/evolve/analysis/hand_made_experiment.hpp), gnuplot
+// worked out by hand (tests/study/analysis/hand_made_experiment.hpp), gnuplot
 // makes the PNGs, robozoo-render is called for the zoo sheets when it exists
 // and the report says so when it does not.
 #include <gtest/gtest.h>
@@ -10,8 +10,8 @@
 #include <map>
 #include <sstream>
 
-#include "evolve/analysis/ttest.hpp"
-#include "tests/evolve/analysis/hand_made_experiment.hpp"
+#include "study/analysis/ttest.hpp"
+#include "tests/study/analysis/hand_made_experiment.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo {
