@@ -7,10 +7,12 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <string>
 
 #include "evolve/io/log_compare.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
+#include "evolve/run/checkpoint.hpp"
 #include "replay/logged_config.hpp"
 #include "replay/message_diff.hpp"
 #include "runlog/log_index.hpp"
@@ -40,8 +42,8 @@ class WorkDir {
   }
   ~WorkDir() {
     if (!owned_) return;
-    for (const char* f : {"/rerun.lcmlog", "/rerun.lcmlog.checkpoint", "/rerun.lcmlog.checkpoint.tmp"})
-      ::unlink((path_ + f).c_str());
+    const std::string log = path_ + "/rerun.lcmlog";
+    for (const std::string& f : {log, checkpoint_path_for(log), checkpoint_path_for(log) + ".tmp"}) ::unlink(f.c_str());
     ::rmdir(path_.c_str());
   }
   WorkDir(const WorkDir&) = delete;

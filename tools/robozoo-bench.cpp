@@ -246,7 +246,7 @@ int main(int argc, char** argv) {
     if (!config_file.empty()) config = load_config_file(config_file);
     if (!log_path.empty()) {
       if (!std::filesystem::is_regular_file(log_path)) throw std::runtime_error("no log file " + log_path);
-      checkpoint = read_checkpoint(log_path + ".checkpoint");
+      checkpoint = read_checkpoint(checkpoint_path_for(log_path));
       log_config = config_from_json(checkpoint.config);
       if (checkpoint.population.genomes.empty())
         throw std::runtime_error(log_path + ".checkpoint holds no genomes");

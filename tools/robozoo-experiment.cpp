@@ -27,6 +27,7 @@
 #include "study/experiment/trial_plan.hpp"
 #include "study/experiment/trial_status.hpp"
 #include "evolve/core/version.hpp"
+#include "evolve/run/checkpoint.hpp"
 
 using namespace robozoo;
 
@@ -276,7 +277,7 @@ int main(int argc, char** argv) {
     if (e.status[i].state != TrialState::Finished || from_results[i]) continue;
     int planned = 0;
     try {
-      planned = read_checkpoint(e.trials[i].log_path + ".checkpoint").config.value("generations", 0);
+      planned = read_checkpoint(checkpoint_path_for(e.trials[i].log_path)).config.value("generations", 0);
     } catch (const std::exception& ex) {
       std::cerr << "robozoo-experiment: " << ex.what() << "\n";
       return 2;
@@ -308,7 +309,7 @@ int main(int argc, char** argv) {
       std::cerr << "robozoo-experiment: " << ex.what() << "\n";
       return 1;
     }
-    const std::string cp = t.log_path + ".checkpoint";
+    const std::string cp = checkpoint_path_for(t.log_path);
     std::filesystem::file_time_type seen{};
     auto last_line = std::chrono::steady_clock::now() - std::chrono::hours(1);
     int32_t last_gen = e.status[i].generations_done;

@@ -28,6 +28,7 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,7 @@
 #include "evolve/parallel/mpi/mpi_transport.hpp"
 #include "evolve/parallel/mpi/mpi_worker.hpp"
 #include "evolve/parallel/scaling_model.hpp"
+#include "evolve/run/checkpoint.hpp"
 #include "evolve/run/evolution.hpp"
 #include "evolve/run/pool_evaluator.hpp"
 #include "evolve/core/version.hpp"
@@ -193,14 +195,14 @@ std::string main_bound(const Projection& p) {
 /// next generations leaves the original untouched.
 void copy_run(const std::string& log, const std::string& dest) {
   namespace fs = std::filesystem;
-  for (const std::string& suffix : {std::string(), std::string(".checkpoint")}) {
-    if (!fs::is_regular_file(log + suffix)) throw std::runtime_error("--resume: no file " + log + suffix);
-    if (fs::exists(dest + suffix))
-      throw std::runtime_error("--log " + dest + ": " + dest + suffix +
+  const std::pair<std::string, std::string> files[] = {{log, dest}, {checkpoint_path_for(log), checkpoint_path_for(dest)}};
+  for (const auto& [from, to] : files) {
+    if (!fs::is_regular_file(from)) throw std::runtime_error("--resume: no file " + from);
+    if (fs::exists(to))
+      throw std::runtime_error("--log " + dest + ": " + to +
                                " exists already; --resume measures on a copy of the run and will not overwrite a file");
   }
-  for (const std::string& suffix : {std::string(), std::string(".checkpoint")})
-    fs::copy_file(log + suffix, dest + suffix);
+  for (const auto& [from, to] : files) fs::copy_file(from, to);
 }
 
 int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {

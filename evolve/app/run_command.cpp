@@ -153,11 +153,13 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
     opts.log_path = o.log_path.empty() ? "runs/" + id + ".lcmlog" : o.log_path;
     const auto parent = std::filesystem::path(opts.log_path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
-    if (o.resume && std::filesystem::exists(opts.log_path + ".checkpoint")) {
+    const std::string checkpoint = checkpoint_path_for(opts.log_path);
+    if (o.resume && std::filesystem::exists(checkpoint)) {
       // A resumed run is the run in the checkpoint: its configuration, not the
-      // command line's, decides how the workers evaluate.
-      const Checkpoint c = read_checkpoint(opts.log_path + ".checkpoint");
-      config = config_from_json(c.config);
+      // command line's, decides how the workers evaluate. Evolution resumes from
+      // this same reading of it.
+      opts.checkpoint = read_checkpoint(checkpoint);
+      config = config_from_json(opts.checkpoint->config);
       // --generations on resume moves the run's end: up only (Evolution refuses less).
       if (app.count("--generations")) {
         opts.generations = o.generations;
@@ -168,7 +170,7 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
         config.generations = o.generations;
       }
     }
-    if (!o.resume && std::filesystem::exists(opts.log_path + ".checkpoint") &&
+    if (!o.resume && std::filesystem::exists(checkpoint) &&
         std::filesystem::exists(opts.log_path)) {
       // Refuse to silently overwrite a run that could be resumed.
       std::cerr << "robozoo-evolve: " << opts.log_path

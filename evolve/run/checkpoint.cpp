@@ -15,6 +15,8 @@
 
 namespace robozoo {
 
+std::string checkpoint_path_for(const std::string& log_path) { return log_path + ".checkpoint"; }
+
 namespace {
 std::runtime_error sys_error(const std::string& path, const std::string& what) {
   return std::runtime_error(path + ": " + what + " (" + std::strerror(errno) + ")");

@@ -29,6 +29,9 @@ struct Checkpoint {
   bool finished = false;            ///< every generation done
 };
 
+/// Where the checkpoint of the run logged at `log_path` lives: beside it, `log_path` + ".checkpoint".
+std::string checkpoint_path_for(const std::string& log_path);
+
 /// Writes atomically: `path` holds either the old or the new checkpoint, never a mix.
 void write_checkpoint(const std::string& path, const Checkpoint& c);
 /// Throws std::runtime_error naming the path for a missing, unreadable or malformed file.

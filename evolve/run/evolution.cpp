@@ -62,11 +62,12 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     throw std::invalid_argument(
         "overlap_trajectory needs an evaluator whose simulations run in other processes: ODE's random "
         "constraint order is process-wide, so two simulations at once in one process differ");
-  checkpoint_path_ = options_.checkpoint_path.empty() ? options_.log_path + ".checkpoint"
+  checkpoint_path_ = options_.checkpoint_path.empty() ? checkpoint_path_for(options_.log_path)
                                                       : options_.checkpoint_path;
   const GenomeLayout layout = robot_layout();
-  if (options_.resume && file_exists(checkpoint_path_)) {
-    Checkpoint c = read_checkpoint(checkpoint_path_);
+  if (options_.resume && (options_.checkpoint || file_exists(checkpoint_path_))) {
+    Checkpoint c = options_.checkpoint ? std::move(*options_.checkpoint) : read_checkpoint(checkpoint_path_);
+    options_.checkpoint.reset();
     RunConfig saved;
     try {
       saved = config_from_json(c.config);

@@ -25,11 +25,13 @@ namespace robozoo {
 struct EvolveOptions {
   std::string run_id;           ///< empty: "<regime>-s<seed>"
   std::string log_path;         ///< the run's LCM log
-  std::string checkpoint_path;  ///< empty: log_path + ".checkpoint"
+  std::string checkpoint_path;  ///< empty: checkpoint_path_for(log_path)
   std::string lcm_url;          ///< empty: no live publishing
   BusPacing bus_pacing;         ///< when messages go out on the bus, and so their time stamps in the
                                 ///< log, bus or not (BusPacer)
   bool resume = false;          ///< continue from the checkpoint
+  std::optional<Checkpoint> checkpoint;  ///< with resume: the checkpoint, already read by the caller
+                                         ///< (empty: read from checkpoint_path when it exists)
   bool force_version = false;   ///< resume a checkpoint written by another robozoo version anyway
   int32_t generations = 0;      ///< with resume: run to this many generations, at least the checkpoint's
                                 ///< (count; 0: the checkpoint's). More extends the run, finished or not,

@@ -173,7 +173,7 @@ RunSummary compact_summary(const RunSummary& full) {
 RunResults results_from_log(const std::string& log_path) {
   RunResults r;
   r.run = compact_summary(summarize_run_file(log_path));
-  const std::string cp = log_path + ".checkpoint";
+  const std::string cp = checkpoint_path_for(log_path);
   try {
     if (std::filesystem::exists(cp)) {
       r.evolve_seconds = read_checkpoint(cp).elapsed_seconds;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "evolve/config/run_config.hpp"
+#include "evolve/run/checkpoint.hpp"
 
 namespace robozoo {
 
@@ -38,7 +39,7 @@ std::string trial_mismatch(const Checkpoint& c, const Trial& t, const Experiment
 
 TrialStatus trial_status(const Trial& t, const ExperimentParams& p) {
   TrialStatus s;
-  const std::string cp = t.log_path + ".checkpoint";
+  const std::string cp = checkpoint_path_for(t.log_path);
   if (!std::filesystem::exists(cp)) {
     // Starting afresh would replace the log: a log without its checkpoint can be neither resumed nor extended.
     if (std::filesystem::exists(t.log_path))

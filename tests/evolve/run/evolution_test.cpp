@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,33 @@ void evolve(const RunConfig& c, const std::string& log, bool overlap, int stop_a
     evo.wait_for_checkpoint();
   else
     evo.settle();
+}
+
+// A caller that read the checkpoint already (robozoo-evolve --resume, for the
+// run's configuration) hands it over: the run resumes from that reading, not
+// from the file, and logs what an uninterrupted run logs.
+TEST(Evolution, ResumesFromTheCheckpointItIsGiven) {
+  TempDir dir;
+  const RunConfig c = run_with_trajectories();
+  evolve(c, dir / "whole.lcmlog", false);
+  const std::string log = dir / "resumed.lcmlog";
+  evolve(c, log, false, 2);
+  ASSERT_EQ(checkpoint_path_for(log), log + ".checkpoint");
+  EvolveOptions o = options(log, false, false);
+  o.resume = true;
+  o.checkpoint = read_checkpoint(checkpoint_path_for(log));
+  ASSERT_EQ(o.checkpoint->population.generation, 2);
+  // Spoil the file: a second reading of it would fail.
+  std::ofstream(checkpoint_path_for(log)) << "{ not json";
+  PoolEvaluator evaluator(2, c.eval);
+  Evolution evo(c, o, evaluator);
+  EXPECT_TRUE(evo.resumed());
+  EXPECT_EQ(evo.generation(), 2);
+  while (evo.step({})) {
+  }
+  evo.settle();
+  EXPECT_EQ(first_log_difference(read_event_log(dir / "whole.lcmlog"), read_event_log(log)), "");
+  EXPECT_TRUE(read_checkpoint(checkpoint_path_for(log)).finished);
 }
 
 // robozoo-evolve --mpi re-simulates a new champion while the next generation is
