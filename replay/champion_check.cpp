@@ -11,6 +11,7 @@
 #include "evolve/sim/simulation.hpp"
 #include "replay/morphology_compare.hpp"
 #include "replay/pose_compare.hpp"
+#include "runlog/regrow.hpp"
 
 namespace robozoo {
 
@@ -49,8 +50,8 @@ void compare_poses(const LogContents& log, const LogIndex& index, const LoggedGe
   }
   out.poses_logged = static_cast<int64_t>(poses.size());
   if (poses.empty() && rule != TrajectoryRule::Complete) return;
-  const Trajectory t =
-      simulate_trajectory(robot, config.eval.sim, config.pose_every, g.run_id, g.generation, g.genome_id);
+  const PoseStream t =
+      simulate_pose_stream(robot, config.eval.sim, config.pose_every, g.run_id, g.generation, g.genome_id);
   const auto& want = t.poses;
   if (rule == TrajectoryRule::Lossy) {
     out.poses_expected = static_cast<int64_t>(want.size());
@@ -152,7 +153,7 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
   }
   Genome genome;
   try {
-    genome = genome_from_message(gm, robot_layout());
+    genome = logged_genes(gm);
   } catch (const std::exception& e) {
     out.problems.push_back(std::string("its genome cannot be used: ") + e.what());
     return finish();

@@ -20,6 +20,7 @@
 #include "replay/logged_config.hpp"
 #include "replay/recompute_cache.hpp"
 #include "runlog/log_index.hpp"
+#include "runlog/regrow.hpp"
 
 namespace robozoo {
 
@@ -207,7 +208,7 @@ void LiveChecker::close_block(Run& run, bool at_end) {
     uint64_t key = 0;
     bool key_ok = false;
     try {
-      key = trajectory_key(genome_from_message(m, robot_layout()));
+      key = trajectory_key(logged_genes(m));
       key_ok = true;
     } catch (const std::exception&) {
     }

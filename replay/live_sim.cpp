@@ -3,11 +3,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "evolve/fitness/evaluate.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "evolve/sim/trajectory_sampler.hpp"
 #include "replay/logged_config.hpp"
+#include "runlog/regrow.hpp"
 
 namespace robozoo {
 
@@ -52,8 +53,7 @@ LiveSimStats live_simulate(const LogContents& log, const LogIndex& index, const 
   const std::string refusal = version_refusal(run);
   if (!refusal.empty() && !o.force) throw std::invalid_argument(refusal);
   const RunConfig config = config_from_run_message(run);
-  const Genome genome = genome_from_message(gm, robot_layout());
-  const Robot robot = grow_genome(genome, config.eval);
+  const Robot robot = regrow_genome(gm, config).robot;
 
   LiveSimStats stats;
   stats.run_id = g->run_id;
@@ -69,17 +69,11 @@ LiveSimStats live_simulate(const LogContents& log, const LogIndex& index, const 
 
   Simulation sim(robot, config.eval.sim);
   const double t0 = clock.now();
-  auto pose = [&] {
-    clock.sleep_until(t0 + sim.state().time / o.speed);
-    send(kChannelPose,
-         encode_message(make_pose_message(g->run_id, g->generation, g->genome_id, sim.state(), now_us())));
+  const SimResult r = sample_trajectory(sim, o.pose_every, [&](const SimState& state) {
+    clock.sleep_until(t0 + state.time / o.speed);
+    send(kChannelPose, encode_message(make_pose_message(g->run_id, g->generation, g->genome_id, state, now_us())));
     ++stats.poses_sent;
-  };
-  pose();
-  while (sim.step())
-    if (sim.state().step % o.pose_every == 0) pose();
-  if (sim.state().step % o.pose_every != 0) pose();
-  const SimResult r = sim.result();
+  });
   stats.steps_run = r.steps_run;
   stats.d = r.d;
   return stats;

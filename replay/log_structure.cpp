@@ -9,6 +9,7 @@
 #include "evolve/run/trajectory.hpp"
 #include "evolve/sim/outcome.hpp"
 #include "replay/value_compare.hpp"
+#include "runlog/regrow.hpp"
 
 namespace robozoo {
 
@@ -265,7 +266,7 @@ class Checker {
       b.champion_eventnum = record(k).eventnum;
       b.champion_simulated = m.outcome != static_cast<int8_t>(Outcome::NotSimulated);
       try {
-        b.champion_key = trajectory_key(genome_from_message(m, robot_layout()));
+        b.champion_key = trajectory_key(logged_genes(m));
         b.champion_key_known = true;
       } catch (const std::exception&) {
         b.champion_key_known = false;  // its check reports the genome as unusable

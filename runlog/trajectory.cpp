@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/config/run_config.hpp"
-#include "evolve/fitness/evaluate.hpp"
-#include "evolve/messages/build.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "evolve/sim/trajectory_sampler.hpp"
+#include "runlog/regrow.hpp"
 #include "runlog/selection.hpp"
 
 namespace robozoo {
@@ -57,32 +57,18 @@ Trajectory simulate_trajectory(const run_t& run, const cppn_genome_t& genome, co
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument("run " + run.run_id + ": its configuration is not JSON: " + e.what());
   }
-  const Genome g = genome_from_message(genome, robot_layout());
-  const Robot robot = grow_genome(g, config.eval);
-  if (robot.spheres.size() != morphology.spheres.size())
-    throw std::runtime_error("re-growing genome " + std::to_string(genome.genome_id) + " gave " +
-                             std::to_string(robot.spheres.size()) + " spheres, the log has " +
-                             std::to_string(morphology.spheres.size()) + " (another version or configuration?)");
-  for (size_t i = 0; i < robot.spheres.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      if (robot.spheres[i].center[k] != morphology.spheres[i].center[k])
-        throw std::runtime_error("re-growing genome " + std::to_string(genome.genome_id) + " moved sphere " +
-                                 std::to_string(i) + " from where the log has it");
-  Simulation sim(robot, config.eval.sim);
+  const RegrownGenome regrown = regrow_genome(genome, config);
+  require_logged_morphology(regrown.robot, morphology, genome.genome_id);
+  Simulation sim(regrown.robot, config.eval.sim);
   Trajectory tr;
   tr.resimulated = true;
-  auto keep = [&] {
-    const SimState& s = sim.state();
+  sample_trajectory(sim, every, [&](const SimState& s) {
     tr.step.push_back(s.step);
     tr.time.push_back(s.time);
     tr.centers.push_back(s.sphere_center);
     tr.neurons.push_back(s.neuron_output);
     tr.sensors.push_back(s.sensor_value);
-  };
-  keep();
-  while (sim.step())
-    if (sim.state().step % every == 0) keep();
-  if (tr.step.back() != sim.state().step) keep();
+  });
   return tr;
 }
 

@@ -220,7 +220,7 @@ void Evolution::run(const std::function<void(const ProgressReport&)>& on_generat
 
 std::vector<pose_t> Evolution::champion_trajectory(const Genome& champion, const Robot& robot, int32_t generation,
                                                    const EvalSummary& expected) const {
-  Trajectory t = simulate_trajectory(robot, config_.eval.sim, config_.pose_every, run_id_, generation, champion.id);
+  PoseStream t = simulate_pose_stream(robot, config_.eval.sim, config_.pose_every, run_id_, generation, champion.id);
   const SimResult& r = t.result;
   // The trajectory must be exactly the evaluation the worker made.
   if (r.d != expected.d || static_cast<int>(r.outcome) != static_cast<int>(expected.outcome) ||

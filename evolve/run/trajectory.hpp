@@ -1,6 +1,7 @@
 #pragma once
 // A champion's trajectory as robozoo logs it: the pose at step 0, at every
-// pose_every-th step, and at the last step simulated (whatever pose_every).
+// pose_every-th step, and at the last step simulated (whatever pose_every;
+// evolve/sim/trajectory_sampler).
 // robozoo-evolve publishes it for each new champion; robozoo-replay check
 // re-creates it to prove that every logged pose is there, once and in order.
 #include <cstdint>
@@ -10,18 +11,17 @@
 #include "evolve/cppn/genome.hpp"
 #include "evolve/growth/robot.hpp"
 #include "evolve/sim/simulation.hpp"
+#include "evolve/sim/trajectory_sampler.hpp"
 #include "robozoo/pose_t.hpp"
 
 namespace robozoo {
 
-struct Trajectory {
-  std::vector<pose_t> poses;  ///< in step order, utime 0 (set when sent)
+/// A champion's trajectory as pose messages (the motion itself, for drawing,
+/// is runlog's Trajectory).
+struct PoseStream {
+  std::vector<pose_t> poses;  ///< in step order (trajectory_steps), utime 0 (set when sent)
   SimResult result;           ///< the simulation's result (d, outcome, steps run)
 };
-
-/// The steps at which a trajectory of `steps_run` steps logs a pose, in order:
-/// 0, k, 2k, ... and steps_run when it is not a multiple of k (k = pose_every >= 1).
-std::vector<int32_t> trajectory_steps(int32_t steps_run, int pose_every);
 
 /// The champion's genes as the log carries them (its id and the links' birth
 /// generations left out), hashed: robozoo-evolve logs a champion's trajectory
@@ -30,9 +30,9 @@ std::vector<int32_t> trajectory_steps(int32_t steps_run, int pose_every);
 /// already), and robozoo-replay check proves it from the logged genomes.
 uint64_t trajectory_key(const Genome& champion);
 
-/// Simulates `robot` with `sim` and returns its logged poses and its result.
-/// Throws std::invalid_argument when pose_every < 1.
-Trajectory simulate_trajectory(const Robot& robot, const SimParams& sim, int pose_every, const std::string& run_id,
-                               int32_t generation, int64_t genome_id);
+/// Simulates `robot` with `sim` and returns its logged poses (sample_trajectory
+/// at pose_every) and its result. Throws std::invalid_argument when pose_every < 1.
+PoseStream simulate_pose_stream(const Robot& robot, const SimParams& sim, int pose_every, const std::string& run_id,
+                                int32_t generation, int64_t genome_id);
 
 }  // namespace robozoo

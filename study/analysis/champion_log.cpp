@@ -8,6 +8,7 @@
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/run/trajectory.hpp"
+#include "runlog/regrow.hpp"
 
 namespace robozoo {
 
@@ -37,7 +38,7 @@ ChampionLogInfo write_champion_log(const RunResults& results, const std::string&
     throw std::invalid_argument(s.path + ": its configuration cannot be read by this robozoo: " + e.what());
   }
   config.generations = 1;
-  const Genome genome = genome_from_message(best->genome, robot_layout());
+  const Genome genome = logged_genes(best->genome);
   const cppn_genome_t& logged = best->genome;
 
   // This build must give the committed evaluation, or the log would show another robot.
@@ -55,7 +56,7 @@ ChampionLogInfo write_champion_log(const RunResults& results, const std::string&
   const Robot robot = grow_genome(genome, config.eval);
   std::vector<pose_t> poses;
   if (e.outcome != Outcome::NotSimulated)
-    poses = simulate_trajectory(robot, config.eval.sim, config.pose_every, s.run_id, 0, genome.id).poses;
+    poses = simulate_pose_stream(robot, config.eval.sim, config.pose_every, s.run_id, 0, genome.id).poses;
 
   GenerationSummary g;
   g.generation = 0;

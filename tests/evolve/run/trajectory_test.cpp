@@ -14,16 +14,7 @@
 namespace robozoo {
 namespace {
 
-TEST(Trajectory, StepsAreZeroEveryKthAndTheLast) {
-  EXPECT_EQ(trajectory_steps(10, 4), (std::vector<int32_t>{0, 4, 8, 10}));
-  EXPECT_EQ(trajectory_steps(8, 4), (std::vector<int32_t>{0, 4, 8}));
-  EXPECT_EQ(trajectory_steps(3, 1), (std::vector<int32_t>{0, 1, 2, 3}));
-  EXPECT_EQ(trajectory_steps(0, 4), (std::vector<int32_t>{0}));
-  EXPECT_EQ(trajectory_steps(2, 5), (std::vector<int32_t>{0, 2}));
-  EXPECT_THROW(trajectory_steps(10, 0), std::invalid_argument);
-}
-
-TEST(Trajectory, TheSimulationLogsExactlyThoseSteps) {
+TEST(PoseStream, TheSimulationLogsExactlyThoseSteps) {
   Rng rng(3);
   RandomRobotParams rp;
   rp.min_spheres = rp.max_spheres = 6;
@@ -31,7 +22,7 @@ TEST(Trajectory, TheSimulationLogsExactlyThoseSteps) {
   SimParams sim;
   sim.steps = 203;
   for (int k : {1, 4, 7}) {
-    const Trajectory t = simulate_trajectory(robot, sim, k, "run", 2, 17);
+    const PoseStream t = simulate_pose_stream(robot, sim, k, "run", 2, 17);
     ASSERT_GT(t.result.steps_run, 0);
     const auto steps = trajectory_steps(t.result.steps_run, k);
     ASSERT_EQ(t.poses.size(), steps.size()) << "k = " << k;
@@ -42,10 +33,10 @@ TEST(Trajectory, TheSimulationLogsExactlyThoseSteps) {
       EXPECT_EQ(t.poses[i].utime, 0);
     }
   }
-  EXPECT_THROW(simulate_trajectory(robot, sim, 0, "run", 0, 0), std::invalid_argument);
+  EXPECT_THROW(simulate_pose_stream(robot, sim, 0, "run", 0, 0), std::invalid_argument);
 }
 
-TEST(Trajectory, TheKeyIgnoresIdAndBirthButNotGenes) {
+TEST(PoseStream, TheKeyIgnoresIdAndBirthButNotGenes) {
   Rng rng(5);
   const Genome g = initial_genome(robot_layout(), 11, NeatParams{}, Regime::Recurrent, rng);
   Genome copy = g;
