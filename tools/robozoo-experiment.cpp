@@ -17,17 +17,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
-#include "study/analysis/run_results.hpp"
 #include "evolve/config/run_config.hpp"
+#include "evolve/core/version.hpp"
+#include "evolve/run/checkpoint.hpp"
+#include "study/analysis/run_results.hpp"
 #include "study/experiment/child_process.hpp"
-#include "util/program_path.hpp"
 #include "study/experiment/progress_estimate.hpp"
 #include "study/experiment/trial_plan.hpp"
 #include "study/experiment/trial_status.hpp"
-#include "evolve/core/version.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "util/program_path.hpp"
 
 using namespace robozoo;
 
@@ -126,9 +127,27 @@ void print_status(const Experiment& e) {
   std::cout << "\n";
 }
 
-}  // namespace
+/// What the command line asks for, besides the experiment's parameters.
+struct Options {
+  ExperimentParams params;
+  std::string evolve;               ///< the robozoo-evolve program; empty: the one beside this program
+  std::string results_dir;          ///< the trials' compact results; empty: OUT/results
+  std::string mpirun = "mpirun";    ///< the MPI launcher with its options, split at spaces
+  bool status_only = false;
+  bool force = false;
+  double progress_interval = 5.0;   ///< seconds between progress lines
+};
 
-int main(int argc, char** argv) {
+/// Reads the command line into `o`; the exit status when the program ends here
+/// (--help, --version, a bad option), nothing when it goes on.
+std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
+  ExperimentParams& p = o.params;
+  std::string& evolve = o.evolve;
+  std::string& results_dir = o.results_dir;
+  std::string& mpirun = o.mpirun;
+  bool& status_only = o.status_only;
+  bool& force = o.force;
+  double& progress_interval = o.progress_interval;
   CLI::App app{
       "robozoo-experiment: run the paper's experiment, --trials trials of each arm (feed-forward and\n"
       "recurrent CPPNs; optionally recurrent CPPNs from the control's sparse start, or from the recurrent\n"
@@ -140,12 +159,7 @@ int main(int argc, char** argv) {
       "their checkpoints. Each finished trial leaves a compact result (<trial>.results.json, a few kB, to\n"
       "commit) in --results. The paper's sizes are the defaults (30 trials, population 150, 500\n"
       "generations). Afterwards: robozoo-stats DIR (or robozoo-stats RESULTS_DIR)."};
-  ExperimentParams p;
-  std::string evolve;
-  bool status_only = false;
-  double progress_interval = 5.0;
   app.add_option("--out", p.out_dir, "folder of the experiment's logs (created if missing)")->required();
-  std::string results_dir;
   app.add_option("--results", results_dir,
                  "folder of the trials' compact results (default: OUT/results); a trial whose log and checkpoint "
                  "are not in --out but whose result here reached --generations is done");
@@ -164,7 +178,6 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   app.add_option("--steps", p.steps, "physics steps per evaluation, passed to robozoo-evolve (default: its own, 2500)")
       ->check(CLI::Range(1, 1000000000));
-  std::string mpirun = "mpirun";
   app.add_option("--mpi", p.mpi_ranks,
                  "run each trial as an MPI job of this many ranks: <mpirun> -np RANKS robozoo-evolve --mpi ... "
                  "(rank 0 evolves, logs and checkpoints; ranks 1.. evaluate; >= 2; excludes --workers)")
@@ -177,12 +190,15 @@ int main(int argc, char** argv) {
   app.add_option("--progress-interval", progress_interval, "seconds between progress lines (at most one per generation)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--status", status_only, "print where each trial stands and exit");
-  bool force = false;
   app.add_flag("--force", force,
                "resume or extend trials whose checkpoints another robozoo version wrote (robozoo-evolve --resume "
                "--force: that version may grow, simulate or breed differently)");
   app.set_version_flag("--version", robozoo::version_line());
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
   {
     std::istringstream words(mpirun);
     p.mpirun.clear();
@@ -194,51 +210,58 @@ int main(int argc, char** argv) {
     std::cerr << "robozoo-experiment: --mpirun only applies with --mpi RANKS\n";
     return 2;
   }
-
   if (results_dir.empty()) results_dir = p.out_dir + "/results";
+  return std::nullopt;
+}
+
+/// The trials of the experiment and where each stands: from its log and
+/// checkpoint in --out, or, with neither there, from its compact result in
+/// --results (`from_results`: done according to that result alone). Throws
+/// std::invalid_argument for a result that cannot stand for its trial.
+Experiment plan_experiment(const Options& o, std::vector<bool>& from_results) {
+  const ExperimentParams& p = o.params;
+  const std::string& results_dir = o.results_dir;
   Experiment e;
   e.params = p;
-  std::vector<bool> from_results;  // done according to its compact result alone (no log here)
-  try {
-    e.trials = plan_trials(p);
-    for (const auto& t : e.trials) {
-      e.status.push_back(trial_status(t, p));
-      from_results.push_back(false);
-      const std::string rp = results_path(results_dir, t);
-      if (e.status.back().state != TrialState::NotStarted || !std::filesystem::exists(rp)) continue;
-      // No log, no checkpoint, but a compact result (e.g. an experiment continued on another machine).
-      const RunResults r = read_run_results(rp);
-      if (r.run.run_id != t.name() || r.run.population != p.population)
-        throw std::invalid_argument(rp + " is the result of run " + r.run.run_id + " with population " +
-                                    std::to_string(r.run.population) + ", not of trial " + t.name() +
-                                    " with population " + std::to_string(p.population));
-      if (!r.run.complete() || r.run.generations_requested < p.generations)
-        throw std::invalid_argument(rp + " holds " + t.name() + " at " + std::to_string(r.run.generations.size()) +
-                                    " generations, but its log and checkpoint are not in " + p.out_dir +
-                                    ": it cannot be extended to " + std::to_string(p.generations) +
-                                    " (copy <trial>.lcmlog and its .checkpoint there)");
-      e.status.back().state = TrialState::Finished;
-      e.status.back().generations_done = p.generations;
-      from_results.back() = true;
-    }
-  } catch (const std::exception& ex) {
-    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
-    return 2;
+  e.trials = plan_trials(p);
+  from_results.clear();
+  for (const auto& t : e.trials) {
+    e.status.push_back(trial_status(t, p));
+    from_results.push_back(false);
+    const std::string rp = results_path(results_dir, t);
+    if (e.status.back().state != TrialState::NotStarted || !std::filesystem::exists(rp)) continue;
+    // No log, no checkpoint, but a compact result (e.g. an experiment continued on another machine).
+    const RunResults r = read_run_results(rp);
+    if (r.run.run_id != t.name() || r.run.population != p.population)
+      throw std::invalid_argument(rp + " is the result of run " + r.run.run_id + " with population " +
+                                  std::to_string(r.run.population) + ", not of trial " + t.name() +
+                                  " with population " + std::to_string(p.population));
+    if (!r.run.complete() || r.run.generations_requested < p.generations)
+      throw std::invalid_argument(rp + " holds " + t.name() + " at " + std::to_string(r.run.generations.size()) +
+                                  " generations, but its log and checkpoint are not in " + p.out_dir +
+                                  ": it cannot be extended to " + std::to_string(p.generations) +
+                                  " (copy <trial>.lcmlog and its .checkpoint there)");
+    e.status.back().state = TrialState::Finished;
+    e.status.back().generations_done = p.generations;
+    from_results.back() = true;
   }
-  if (status_only) {
-    print_status(e);
-    return 0;
-  }
-  // Both programs are checked before the folder is made: a refused start leaves nothing behind.
+  return e;
+}
+
+/// Finds robozoo-evolve and, with --mpi, the MPI launcher (put in e.params);
+/// says why and returns false when one cannot be run.
+bool find_programs(Options& o, Experiment& e) {
+  const ExperimentParams& p = o.params;
+  std::string& evolve = o.evolve;
   try {
     if (evolve.empty()) evolve = program_dir() + "/robozoo-evolve";
   } catch (const std::exception& ex) {
     std::cerr << "robozoo-experiment: " << ex.what() << "\n";
-    return 2;
+    return false;
   }
   if (!is_executable(evolve)) {
     std::cerr << "robozoo-experiment: cannot run " << evolve << " (build robozoo-evolve, or give --evolve)\n";
-    return 2;
+    return false;
   }
   if (p.mpi_ranks > 0) {
     const char* path = std::getenv("PATH");
@@ -246,17 +269,16 @@ int main(int argc, char** argv) {
     if (launcher.empty() || !is_executable(launcher)) {
       std::cerr << "robozoo-experiment: cannot run the MPI launcher " << p.mpirun.front()
                 << " (install Open MPI: tools/setup.sh, or give --mpirun)\n";
-      return 2;
+      return false;
     }
     e.params.mpirun.front() = launcher;
   }
-  try {
-    std::filesystem::create_directories(p.out_dir);
-  } catch (const std::exception& ex) {
-    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
-    return 2;
-  }
+  return true;
+}
 
+/// The line that says what the experiment will do.
+void print_plan(const Experiment& e) {
+  const ExperimentParams& p = e.params;
   int finished = 0, partial = 0;
   for (const auto& s : e.status) {
     finished += s.state == TrialState::Finished;
@@ -270,107 +292,149 @@ int main(int argc, char** argv) {
             << ", in " << p.out_dir
             << "\n  " << finished << " finished (skipped), " << partial << " to resume, "
             << e.trials.size() - static_cast<size_t>(finished + partial) << " to start" << std::endl;
+}
 
-  // Trials finished before (or before compact results existed) get theirs now.
+/// Trials finished before (or before compact results existed) get theirs now.
+/// Returns false when one could not be written; throws when a trial's
+/// checkpoint cannot be read.
+bool write_missing_results(const Experiment& e, const std::vector<bool>& from_results, const std::string& results_dir) {
   bool results_ok = true;
   for (size_t i = 0; i < e.trials.size(); ++i) {
     if (e.status[i].state != TrialState::Finished || from_results[i]) continue;
-    int planned = 0;
-    try {
-      planned = read_checkpoint(checkpoint_path_for(e.trials[i].log_path)).config.value("generations", 0);
-    } catch (const std::exception& ex) {
-      std::cerr << "robozoo-experiment: " << ex.what() << "\n";
-      return 2;
-    }
+    const int planned = read_checkpoint(checkpoint_path_for(e.trials[i].log_path)).config.value("generations", 0);
     results_ok &= write_trial_results(e.trials[i], results_path(results_dir, e.trials[i]), planned, false);
   }
+  return results_ok;
+}
 
-  SignalBlock block;
-  for (size_t i = 0; i < e.trials.size(); ++i) {
-    const Trial& t = e.trials[i];
-    if (e.status[i].state == TrialState::Finished) continue;
-    const bool resume = e.status[i].state == TrialState::Partial;
-    std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": "
-              << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done) +
-                               " (to " + std::to_string(p.generations) + ")"
-                         : std::string("starting"))
-              << " (log " << t.log_path << ")" << std::endl;
-    std::vector<std::string> args = trial_command(t, e.params, evolve, resume);
-    if (resume && force) args.push_back("--force");
-    if (p.mpi_ranks > 0) {
-      std::cerr << " ";
-      for (const auto& a : args) std::cerr << " " << a;
-      std::cerr << std::endl;
-    }
-    pid_t pid;
-    try {
-      pid = spawn_child(args, t.output_path);
-    } catch (const std::exception& ex) {
-      std::cerr << "robozoo-experiment: " << ex.what() << "\n";
-      return 1;
-    }
-    const std::string cp = checkpoint_path_for(t.log_path);
-    std::filesystem::file_time_type seen{};
-    auto last_line = std::chrono::steady_clock::now() - std::chrono::hours(1);
-    int32_t last_gen = e.status[i].generations_done;
-    for (;;) {
-      const ChildEvent ev = wait_child(block, pid, 1.0);
-      if (ev.kind == ChildEvent::Signalled) {
-        std::cerr << "\nrobozoo-experiment: " << strsignal(ev.signal) << ": stopping " << t.name() << " ..."
-                  << std::endl;
-        stop_child(pid);
-        try {
-          e.status[i] = trial_status(t, p);
-        } catch (const std::exception&) {
-        }
-        std::cerr << "robozoo-experiment: stopped; " << t.name() << " kept "
-                  << e.status[i].generations_done << " finished generations. Run the same command again to resume."
-                  << std::endl;
-        return 128 + ev.signal;
-      }
-      if (ev.kind == ChildEvent::Exited) {
-        try {
-          e.status[i] = trial_status(t, p);
-        } catch (const std::exception& ex) {
-          std::cerr << "robozoo-experiment: " << ex.what() << "\n";
-          return 1;
-        }
-        if (ev.status != 0 || e.status[i].state != TrialState::Finished) {
-          std::cerr << "robozoo-experiment: " << (p.mpi_ranks > 0 ? "the MPI job of robozoo-evolve" : "robozoo-evolve")
-                    << " failed on " << t.name() << " (exit status " << ev.status << "); it ended with:\n"
-                    << last_lines(t.output_path, 8) << "  (all its messages are in " << t.output_path << ")"
-                    << (e.status[i].generations_done > 0 ? ". Its checkpoint is kept: run the same command again to "
-                                                           "resume it"
-                                                         : "")
-                    << "\n";
-          return 1;
-        }
-        std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": finished ("
-                  << format_duration(e.status[i].elapsed_seconds) << ")\n  " << progress_line(e, i) << std::endl;
-        results_ok &= write_trial_results(t, results_path(results_dir, t), p.generations, true);
-        break;
-      }
-      // Timeout: look at the checkpoint when it changed.
-      std::error_code ec;
-      const auto mtime = std::filesystem::last_write_time(cp, ec);
-      if (ec || mtime == seen) continue;
-      seen = mtime;
+/// Runs trial i (starts or resumes it) until it finishes, fails or a signal
+/// stops the experiment, printing progress. Nothing when it finished (its
+/// compact result written, `results_ok` cleared if that failed), else the
+/// program's exit status.
+std::optional<int> run_trial(Experiment& e, size_t i, const Options& o, const SignalBlock& block, bool& results_ok) {
+  const ExperimentParams& p = o.params;
+  const Trial& t = e.trials[i];
+  const bool resume = e.status[i].state == TrialState::Partial;
+  std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": "
+            << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done) +
+                             " (to " + std::to_string(p.generations) + ")"
+                       : std::string("starting"))
+            << " (log " << t.log_path << ")" << std::endl;
+  std::vector<std::string> args = trial_command(t, e.params, o.evolve, resume);
+  if (resume && o.force) args.push_back("--force");
+  if (p.mpi_ranks > 0) {
+    std::cerr << " ";
+    for (const auto& a : args) std::cerr << " " << a;
+    std::cerr << std::endl;
+  }
+  pid_t pid;
+  try {
+    pid = spawn_child(args, t.output_path);
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+    return 1;
+  }
+  const std::string cp = checkpoint_path_for(t.log_path);
+  std::filesystem::file_time_type seen{};
+  auto last_line = std::chrono::steady_clock::now() - std::chrono::hours(1);
+  int32_t last_gen = e.status[i].generations_done;
+  for (;;) {
+    const ChildEvent ev = wait_child(block, pid, 1.0);
+    if (ev.kind == ChildEvent::Signalled) {
+      std::cerr << "\nrobozoo-experiment: " << strsignal(ev.signal) << ": stopping " << t.name() << " ..."
+                << std::endl;
+      stop_child(pid);
       try {
         e.status[i] = trial_status(t, p);
       } catch (const std::exception&) {
-        continue;  // being replaced right now; the next look will do
       }
-      const auto now = std::chrono::steady_clock::now();
-      if (e.status[i].generations_done != last_gen &&
-          std::chrono::duration<double>(now - last_line).count() >= progress_interval) {
-        last_gen = e.status[i].generations_done;
-        last_line = now;
-        std::cerr << "  " << progress_line(e, i) << std::endl;
+      std::cerr << "robozoo-experiment: stopped; " << t.name() << " kept "
+                << e.status[i].generations_done << " finished generations. Run the same command again to resume."
+                << std::endl;
+      return 128 + ev.signal;
+    }
+    if (ev.kind == ChildEvent::Exited) {
+      try {
+        e.status[i] = trial_status(t, p);
+      } catch (const std::exception& ex) {
+        std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+        return 1;
       }
+      if (ev.status != 0 || e.status[i].state != TrialState::Finished) {
+        std::cerr << "robozoo-experiment: " << (p.mpi_ranks > 0 ? "the MPI job of robozoo-evolve" : "robozoo-evolve")
+                  << " failed on " << t.name() << " (exit status " << ev.status << "); it ended with:\n"
+                  << last_lines(t.output_path, 8) << "  (all its messages are in " << t.output_path << ")"
+                  << (e.status[i].generations_done > 0 ? ". Its checkpoint is kept: run the same command again to "
+                                                         "resume it"
+                                                       : "")
+                  << "\n";
+        return 1;
+      }
+      std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": finished ("
+                << format_duration(e.status[i].elapsed_seconds) << ")\n  " << progress_line(e, i) << std::endl;
+      results_ok &= write_trial_results(t, results_path(o.results_dir, t), p.generations, true);
+      return std::nullopt;
+    }
+    // Timeout: look at the checkpoint when it changed.
+    std::error_code ec;
+    const auto mtime = std::filesystem::last_write_time(cp, ec);
+    if (ec || mtime == seen) continue;
+    seen = mtime;
+    try {
+      e.status[i] = trial_status(t, p);
+    } catch (const std::exception&) {
+      continue;  // being replaced right now; the next look will do
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (e.status[i].generations_done != last_gen &&
+        std::chrono::duration<double>(now - last_line).count() >= o.progress_interval) {
+      last_gen = e.status[i].generations_done;
+      last_line = now;
+      std::cerr << "  " << progress_line(e, i) << std::endl;
     }
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (const std::optional<int> status = parse_command_line(argc, argv, o)) return *status;
+  Experiment e;
+  std::vector<bool> from_results;
+  try {
+    e = plan_experiment(o, from_results);
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+    return 2;
+  }
+  if (o.status_only) {
+    print_status(e);
+    return 0;
+  }
+  // Both programs are checked before the folder is made: a refused start leaves nothing behind.
+  if (!find_programs(o, e)) return 2;
+  try {
+    std::filesystem::create_directories(o.params.out_dir);
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+    return 2;
+  }
+  print_plan(e);
+  bool results_ok = true;
+  try {
+    results_ok = write_missing_results(e, from_results, o.results_dir);
+  } catch (const std::exception& ex) {
+    std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+    return 2;
+  }
+  SignalBlock block;
+  for (size_t i = 0; i < e.trials.size(); ++i) {
+    if (e.status[i].state == TrialState::Finished) continue;
+    if (const std::optional<int> status = run_trial(e, i, o, block, results_ok)) return *status;
+  }
   std::cerr << "robozoo-experiment: all " << e.trials.size() << " trials finished (robozoo-evolve time "
-            << format_duration(e.totals().seconds_spent) << "), compact results in " << results_dir
-            << ". Next: robozoo-stats " << p.out_dir << std::endl;
+            << format_duration(e.totals().seconds_spent) << "), compact results in " << o.results_dir
+            << ". Next: robozoo-stats " << o.params.out_dir << std::endl;
   return results_ok ? 0 : 1;
 }

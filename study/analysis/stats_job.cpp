@@ -15,8 +15,8 @@
 #include "study/analysis/report.hpp"
 #include "study/analysis/reproduce_commands.hpp"
 #include "study/analysis/run_program.hpp"
-#include "util/program_path.hpp"
 #include "study/experiment/progress_estimate.hpp"
+#include "util/program_path.hpp"
 
 namespace fs = std::filesystem;
 
@@ -119,12 +119,20 @@ void write_text(const std::string& path, const std::string& text) {
   if (!f) throw std::runtime_error("cannot write " + path);
 }
 
+/// What robozoo-stats read from a folder of logs or compact results.
+struct RunsRead {
+  std::vector<RunAnalysis> runs;
+  bool from_results = false;                                      ///< compact results, not logs
+  std::map<std::string, std::vector<std::string>> per_arm_logs;   ///< logs by arm (none from results)
+  std::set<std::tuple<int32_t, int32_t, int32_t>> sizes;          ///< population, generations, steps
+  double evolve_seconds = 0;                                      ///< robozoo-evolve's wall time (s)
+  int with_checkpoint = 0;                                        ///< runs that know it (count)
+};
 
-}  // namespace
-
-StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
-  StatsOutcome out;
-  out.out_dir = o.out_dir.empty() ? (fs::path(o.log_dir) / "stats").string() : o.out_dir;
+/// Reads and analyses every run of the folder; a run that cannot be used is
+/// left out, with why, in `skipped`. Throws std::invalid_argument when the
+/// folder holds no run, or no usable one.
+RunsRead read_runs(const StatsOptions& o, std::vector<std::string>& skipped, std::ostream& progress) {
   // A folder of logs, or else a folder of compact results (robozoo-experiment's
   // results/, or robozoo-stats --export-results): both read through compact_summary.
   std::vector<std::string> logs = list_logs(o.log_dir);
@@ -133,12 +141,8 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   if (logs.empty())
     throw std::invalid_argument("no *.lcmlog in " + o.log_dir + " (nor compact results, *" +
                                 std::string(kRunResultsExtension) + ")");
-
-  std::vector<RunAnalysis> runs;
-  std::map<std::string, std::vector<std::string>> per_regime_logs;
-  std::set<std::tuple<int32_t, int32_t, int32_t>> sizes;  // population, generations, steps
-  double evolve_seconds = 0;
-  int with_checkpoint = 0;
+  RunsRead r;
+  r.from_results = from_results;
   for (const auto& path : logs) {
     const std::string name = fs::path(path).filename().string();
     RunAnalysis a;
@@ -147,41 +151,42 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
       results = from_results ? read_run_results(path) : results_from_log(path);
       const RunSummary& s = results.run;
       if (!s.complete() && !o.include_unfinished) {
-        out.skipped.push_back(name + ": unfinished (" + std::to_string(s.generations.size()) + " of " +
-                              std::to_string(s.generations_requested) + " generations)");
+        skipped.push_back(name + ": unfinished (" + std::to_string(s.generations.size()) + " of " +
+                          std::to_string(s.generations_requested) + " generations)");
         progress << "  " << name << ": unfinished, skipped\n";
         continue;
       }
       a = analyze_run(s, o.analysis);
     } catch (const std::exception& e) {
-      out.skipped.push_back(name + ": " + e.what());
+      skipped.push_back(name + ": " + e.what());
       progress << "  " << name << ": skipped: " << e.what() << "\n";
       continue;
     }
     progress << "  " << name << ": " << arm_title(a.arm) << " seed " << a.seed << ", "
              << a.best_so_far.size() << " generations, best " << (a.best_so_far.empty() ? 0.0 : a.best_so_far.back())
              << "\n";
-    sizes.insert({a.population, a.generations_requested, a.steps});
-    if (!from_results) per_regime_logs[a.arm].push_back(path);
+    r.sizes.insert({a.population, a.generations_requested, a.steps});
+    if (!from_results) r.per_arm_logs[a.arm].push_back(path);
     if (results.has_evolve_seconds) {
-      evolve_seconds += results.evolve_seconds;
-      ++with_checkpoint;
+      r.evolve_seconds += results.evolve_seconds;
+      ++r.with_checkpoint;
     }
-    runs.push_back(std::move(a));
+    r.runs.push_back(std::move(a));
   }
-  if (runs.empty()) throw std::invalid_argument("no usable run in " + o.log_dir);
-  out.analysis = analyze_experiment(std::move(runs), o.control_arm, o.experimental_arm);
-  const ExperimentAnalysis& A = out.analysis;
-  if (A.control.empty() && A.experimental.empty())
-    throw std::invalid_argument("no run of the arms " + o.control_arm + " and " + o.experimental_arm + " in " +
-                                o.log_dir);
-  const std::string ctl = arm_title(A.control_arm), exp = arm_title(A.experimental_arm);
+  if (r.runs.empty()) throw std::invalid_argument("no usable run in " + o.log_dir);
+  return r;
+}
 
-  fs::create_directories(out.out_dir);
-  auto file = [&out](const std::string& name) {
-    out.files.push_back(name);
-    return (fs::path(out.out_dir) / name).string();
-  };
+/// Records `name` among the files written and gives its path in the output folder.
+std::string output_file(StatsOutcome& out, const std::string& name) {
+  out.files.push_back(name);
+  return (fs::path(out.out_dir) / name).string();
+}
+
+/// The CSV tables.
+void write_tables(const StatsOptions& o, StatsOutcome& out) {
+  const ExperimentAnalysis& A = out.analysis;
+  auto file = [&out](const std::string& name) { return output_file(out, name); };
   fitness_curve_table(A).write(file("fitness_curve.csv"));
   comparison_table(A.fitness, A.control_arm, A.experimental_arm).write(file("fitness.csv"));
   comparison_table(A.morphology, A.control_arm, A.experimental_arm).write(file("morphology.csv"));
@@ -191,7 +196,15 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   champion_change_table(A).write(file("champion_change_events.csv"));
   runs_table(A).write(file("runs.csv"));
   claims_table(assess_claims(A, o.alpha)).write(file("claims.csv"));
+}
 
+/// The report's text: its data paragraph and its notes.
+ReportInputs report_text(const StatsOptions& o, const StatsOutcome& out, const RunsRead& r) {
+  const ExperimentAnalysis& A = out.analysis;
+  const std::string ctl = arm_title(A.control_arm), exp = arm_title(A.experimental_arm);
+  const auto& sizes = r.sizes;
+  const double evolve_seconds = r.evolve_seconds;
+  const int with_checkpoint = r.with_checkpoint;
   ReportInputs rep;
   rep.title = o.title;
   rep.alpha = o.alpha;
@@ -236,53 +249,64 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
                       (o.analysis.changes.topology.joints ? ", hinge joints included" : ", joints not included") +
                       ". Pooled statistics put every new champion of every run of an arm together (described, not "
                       "tested); the tested champion statistics take one value per run.");
+  return rep;
+}
 
-  if (o.plots) {
-    if (!gnuplot_available(o.gnuplot))
-      throw std::runtime_error("cannot run " + o.gnuplot + " with the pngcairo terminal (install gnuplot-nox), "
-                               "or use --no-plots");
-    auto plot = [&](const std::string& stem, const std::string& script_text) {
-      const std::string gp = file(stem + ".gp");
-      write_text(gp, script_text);
-      // gnuplot runs in the output folder so that the scripts name their PNG relatively.
-      run_gnuplot(stem + ".gp", o.gnuplot, out.out_dir);
-      out.files.push_back(stem + ".png");
-      return stem + ".png";
-    };
-    PlotStyle labels;
-    labels.control_label = ctl;
-    labels.experimental_label = exp;
-    PlotStyle wide = labels;
-    wide.width = 1500;
-    wide.height = 1050;
-    rep.fitness_png = plot("fig1_fitness", fitness_curve_script(A.fitness_curve, "fig1_fitness.png",
-                                                                "Figure 1: mean best-so-far fitness, ± 1 s.e.",
-                                                                labels, o.alpha));
-    rep.morphology_png = plot("fig2_morphology",
-                              comparison_panels_script(A.morphology, "fig2_morphology.png",
-                                                       "Figure 2: best-of-run robots (mean ± 1 s.e.; white " +
-                                                           ctl + ", red " + exp + ")",
-                                                       4, wide));
-    PlotStyle mid = labels;
-    mid.width = 1500;
-    mid.height = 750;
-    rep.genotype_png = plot("fig3_genotype",
-                            comparison_panels_script(A.genotype, "fig3_genotype.png",
-                                                     "Figure 3: best-of-run CPPNs (mean ± 1 s.e.)", 4, mid));
-    rep.champion_png = plot("champion_changes",
-                            comparison_panels_script(A.champion, "champion_changes.png",
-                                                     "Section 4: new champions (mean ± 1 s.e.)", 3, mid));
-    for (const auto* side : {&A.control, &A.experimental}) {
-      if (side->empty()) continue;
-      const std::string arm = side == &A.control ? A.control_arm : A.experimental_arm;
-      rep.outcome_pngs.push_back(plot("outcomes-" + arm, outcome_shares_script(mean_outcome_shares(*side),
-                                                                               "outcomes-" + arm + ".png",
-                                                                               "Outcome shares per generation: " +
-                                                                                   arm_title(arm) + " CPPNs",
-                                                                               labels)));
-    }
+/// The figures (gnuplot), put in the report. Throws std::runtime_error when gnuplot cannot run.
+void make_plots(const StatsOptions& o, StatsOutcome& out, ReportInputs& rep) {
+  const ExperimentAnalysis& A = out.analysis;
+  const std::string ctl = arm_title(A.control_arm), exp = arm_title(A.experimental_arm);
+  auto file = [&out](const std::string& name) { return output_file(out, name); };
+  if (!gnuplot_available(o.gnuplot))
+    throw std::runtime_error("cannot run " + o.gnuplot + " with the pngcairo terminal (install gnuplot-nox), "
+                             "or use --no-plots");
+  auto plot = [&](const std::string& stem, const std::string& script_text) {
+    const std::string gp = file(stem + ".gp");
+    write_text(gp, script_text);
+    // gnuplot runs in the output folder so that the scripts name their PNG relatively.
+    run_gnuplot(stem + ".gp", o.gnuplot, out.out_dir);
+    out.files.push_back(stem + ".png");
+    return stem + ".png";
+  };
+  PlotStyle labels;
+  labels.control_label = ctl;
+  labels.experimental_label = exp;
+  PlotStyle wide = labels;
+  wide.width = 1500;
+  wide.height = 1050;
+  rep.fitness_png = plot("fig1_fitness", fitness_curve_script(A.fitness_curve, "fig1_fitness.png",
+                                                              "Figure 1: mean best-so-far fitness, ± 1 s.e.",
+                                                              labels, o.alpha));
+  rep.morphology_png = plot("fig2_morphology",
+                            comparison_panels_script(A.morphology, "fig2_morphology.png",
+                                                     "Figure 2: best-of-run robots (mean ± 1 s.e.; white " +
+                                                         ctl + ", red " + exp + ")",
+                                                     4, wide));
+  PlotStyle mid = labels;
+  mid.width = 1500;
+  mid.height = 750;
+  rep.genotype_png = plot("fig3_genotype",
+                          comparison_panels_script(A.genotype, "fig3_genotype.png",
+                                                   "Figure 3: best-of-run CPPNs (mean ± 1 s.e.)", 4, mid));
+  rep.champion_png = plot("champion_changes",
+                          comparison_panels_script(A.champion, "champion_changes.png",
+                                                   "Section 4: new champions (mean ± 1 s.e.)", 3, mid));
+  for (const auto* side : {&A.control, &A.experimental}) {
+    if (side->empty()) continue;
+    const std::string arm = side == &A.control ? A.control_arm : A.experimental_arm;
+    rep.outcome_pngs.push_back(plot("outcomes-" + arm, outcome_shares_script(mean_outcome_shares(*side),
+                                                                             "outcomes-" + arm + ".png",
+                                                                             "Outcome shares per generation: " +
+                                                                                 arm_title(arm) + " CPPNs",
+                                                                             labels)));
   }
+}
 
+/// The zoo sheets (robozoo-render zoo of each compared arm's best-of-run robots), put in the report.
+void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out, ReportInputs& rep,
+                     std::ostream& progress) {
+  const ExperimentAnalysis& A = out.analysis;
+  const bool from_results = r.from_results;
   std::string render = o.render;
   if (render.empty()) {
     try {
@@ -294,7 +318,8 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
   for (const std::string& arm : {A.control_arm, A.experimental_arm}) {
     ZooSheet z;
     z.regime = arm_title(arm);
-    const auto& regime_logs = per_regime_logs[arm];
+    const auto it = r.per_arm_logs.find(arm);
+    const std::vector<std::string> regime_logs = it == r.per_arm_logs.end() ? std::vector<std::string>{} : it->second;
     if (!o.zoo) {
       z.note = "not made (--no-zoo)";
     } else if (from_results) {
@@ -327,20 +352,40 @@ StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
     }
     rep.zoo.push_back(z);
   }
+}
 
-  {
-    std::string stats = "build/bin/robozoo-stats " + o.log_dir + " --compare " + A.control_arm + "," +
-                        A.experimental_arm;
-    if (o.include_unfinished) stats += " --include-unfinished";
-    if (o.analysis.morphology.ground_epsilon != AnalysisParams{}.morphology.ground_epsilon)
-      stats += " --ground-epsilon " + csv_number(o.analysis.morphology.ground_epsilon);
-    if (o.analysis.changes.topology.joints) stats += " --topology-joints";
-    if (!o.analysis.changes.simulated_only) stats += " --all-champion-changes";
-    if (o.alpha != 0.05) stats += " --alpha " + csv_number(o.alpha);
-    rep.commands = reproduce_commands(A, o.log_dir, stats);
-  }
+/// The robozoo-stats command that makes this report again.
+std::string stats_command(const StatsOptions& o, const ExperimentAnalysis& A) {
+  std::string stats = "build/bin/robozoo-stats " + o.log_dir + " --compare " + A.control_arm + "," +
+                      A.experimental_arm;
+  if (o.include_unfinished) stats += " --include-unfinished";
+  if (o.analysis.morphology.ground_epsilon != AnalysisParams{}.morphology.ground_epsilon)
+    stats += " --ground-epsilon " + csv_number(o.analysis.morphology.ground_epsilon);
+  if (o.analysis.changes.topology.joints) stats += " --topology-joints";
+  if (!o.analysis.changes.simulated_only) stats += " --all-champion-changes";
+  if (o.alpha != 0.05) stats += " --alpha " + csv_number(o.alpha);
+  return stats;
+}
+
+}  // namespace
+
+StatsOutcome run_stats(const StatsOptions& o, std::ostream& progress) {
+  StatsOutcome out;
+  out.out_dir = o.out_dir.empty() ? (fs::path(o.log_dir) / "stats").string() : o.out_dir;
+  RunsRead r = read_runs(o, out.skipped, progress);
+  out.analysis = analyze_experiment(std::move(r.runs), o.control_arm, o.experimental_arm);
+  const ExperimentAnalysis& A = out.analysis;
+  if (A.control.empty() && A.experimental.empty())
+    throw std::invalid_argument("no run of the arms " + o.control_arm + " and " + o.experimental_arm + " in " +
+                                o.log_dir);
+  fs::create_directories(out.out_dir);
+  write_tables(o, out);
+  ReportInputs rep = report_text(o, out, r);
+  if (o.plots) make_plots(o, out, rep);
+  make_zoo_sheets(o, r, out, rep, progress);
+  rep.commands = reproduce_commands(A, o.log_dir, stats_command(o, A));
   rep.analysis = A;
-  write_text(file("report.md"), markdown_report(rep));
+  write_text(output_file(out, "report.md"), markdown_report(rep));
   return out;
 }
 
