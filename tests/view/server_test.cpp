@@ -95,6 +95,12 @@ TEST(ViewServer, ServesTheFixedFilesOnly) {
   EXPECT_NE(index.body().find("robozoo-view"), std::string::npos);
   EXPECT_EQ(index[http::field::content_type], "text/html; charset=utf-8");
   EXPECT_EQ(get(port, "/view.js?v=1").result(), http::status::ok);
+  // Every module view.js imports is served.
+  for (const std::string js : {"/scene.js", "/chart.js", "/strip.js", "/playback.js", "/timeline.js", "/cppn.js"}) {
+    auto r = get(port, js);
+    EXPECT_EQ(r.result(), http::status::ok) << js;
+    EXPECT_EQ(r[http::field::content_type], "text/javascript; charset=utf-8") << js;
+  }
   auto three = get(port, "/three/build/three.module.js");
   EXPECT_EQ(three.result(), http::status::ok);
   EXPECT_NE(three.body().find("REVISION"), std::string::npos);
