@@ -82,7 +82,10 @@ export class CppnView {
         d = `M ${a.x - 4} ${a.y - R + 1} C ${a.x - 16} ${a.y - 26}, ${a.x + 16} ${a.y - 26}, ${a.x + 4} ${a.y - R + 1}`;
       } else if (!back) {
         d = `M ${a.x} ${a.y} L ${b.x} ${b.y}`;
-      } else {  // curved to the side of the chord, further the longer it is
+      } else if (a.x === b.x) {  // within a column: curved towards the middle, away from the names
+        const cx = a.x + (a.x > W / 2 ? -1 : 1) * (12 + 0.35 * Math.abs(b.y - a.y));
+        d = `M ${a.x} ${a.y} Q ${cx} ${(a.y + b.y) / 2} ${b.x} ${b.y}`;
+      } else {  // backwards: curved to the side of the chord, further the longer it is
         const dx = b.x - a.x, dy = b.y - a.y, len = Math.hypot(dx, dy) || 1;
         const bend = 10 + 0.3 * len;
         const cx = (a.x + b.x) / 2 + (dy / len) * bend, cy = (a.y + b.y) / 2 - (dx / len) * bend;
@@ -111,8 +114,9 @@ export class CppnView {
     }
     svg.append(linkLayer, nodeLayer);
     const enabled = links.filter((l) => l.on).length;
-    this.caption.textContent = `genome ${robot.id}: ${nodes.length} nodes, ${links.length} links ` +
-                               `(${enabled} enabled, ${recurrent} recurrent)`;
+    this.caption.textContent = `${nodes.length} nodes · ${links.length} links (${recurrent} recurrent)`;
+    this.caption.title = `genome ${robot.id}: ${nodes.length} nodes, ${links.length} links, ${enabled} enabled, ` +
+                         `${recurrent} recurrent`;
     this.drawnCounts = { nodes: nodeLayer.childElementCount, links: drawn, recurrent,
                          disabled: links.length - enabled };
   }

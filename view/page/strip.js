@@ -13,6 +13,7 @@ export class Strip {
   /// el: {canvas, key, groups, scroll, spacer} elements of the panel.
   constructor(el) {
     this.el = el;
+    this.robot = null;
     this.traces = [];        // {group, src: "n" | "s", k, name}
     this.hidden = new Set(); // groups not shown
     // What the last draw drew (for tests): rows, points, the cursor's x (CSS px) at time `at` (s).
@@ -24,6 +25,7 @@ export class Strip {
   }
 
   setRobot(robot) {
+    this.robot = robot;
     const types = robot.sensor_type || [], spheres = robot.sensor_sphere || [];
     const traces = [];
     for (let k = 0; k < robot.neurons; k++) traces.push({ group: "neurons", src: "n", k, name: `neuron ${k}` });
@@ -100,7 +102,7 @@ export class Strip {
                   cursorX: null, at };
     if (rows.length === 0) {
       ctx.fillStyle = "#888";
-      ctx.fillText("this robot has no neurons or sensors", 8, 14);
+      ctx.fillText(this.robot ? "this robot has no neurons or sensors" : "waiting for a champion…", 8, 14);
       return;
     }
     const top = scroll.scrollTop, first = Math.max(0, Math.floor(top / rh));

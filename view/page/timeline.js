@@ -65,7 +65,8 @@ export class Timeline {
 
   showGenLabel(i) {
     const c = this.champions[i];
-    this.el.genLabel.textContent = c ? `gen ${c.gen} · genome ${c.id}` : "–";
+    this.el.genLabel.textContent = c ? `gen ${c.gen} · #${c.id}` : "–";
+    this.el.genLabel.title = c ? `champion of generation ${c.gen}: genome ${c.id}` : "";
   }
 
   /// Brings the controls up to date (every frame: cheap when nothing changed).
@@ -92,6 +93,7 @@ export class Timeline {
     if (i >= 0 && document.activeElement !== e.gen && e.gen.value !== String(i)) { e.gen.value = String(i); }
     if (document.activeElement !== e.gen) this.showGenLabel(i >= 0 ? i : -1);
     const where = live ? "live" : "the log";
+    // The text's length never moves the panels: the bar is one line of fixed height.
     const state = following ? `following ${where}` :
                   !p.robot ? "waiting for the champion asked for" :
                   t0 === null ? `waiting for the samples of genome ${id}` :
