@@ -40,7 +40,10 @@ export class Timeline {
     });
     window.addEventListener("keydown", (k) => {
       if (k.target.closest && k.target.closest("input, select, textarea")) return;
-      if (k.key === " ") { k.preventDefault(); this.toggle(); }
+      if (k.key === " ") {
+        if (k.target.closest && k.target.closest("button")) return;  // the focused button's own click
+        k.preventDefault(); this.toggle();
+      }
       else if (k.key === "ArrowLeft") { k.preventDefault(); this.step(-1); }
       else if (k.key === "ArrowRight") { k.preventDefault(); this.step(1); }
     });

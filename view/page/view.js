@@ -117,6 +117,7 @@ function backToLive() {
 function resetRun() {
   state.run = null; state.last = null; state.champions = [];
   state.liveRobot = null; state.liveSamples = []; state.liveDone = false; state.following = state.moment === null;
+  if (state.moment) state.moment.asked = false;  // a new connection: ask again
   $("champions").replaceChildren();
   timeline.setChampions(state.champions);
   chart.clear();
