@@ -5,6 +5,7 @@ import { Scene } from "/scene.js";
 import { Chart } from "/chart.js";
 import { Strip } from "/strip.js";
 import { Playback } from "/playback.js";
+import { offlineFrames, setupSave } from "/offline.js";
 
 const $ = (id) => document.getElementById(id);
 const scene = new Scene($("stage"));
@@ -154,7 +155,12 @@ function connect() {
     setTimeout(connect, 2000);
   };
 }
-connect();
+const offline = offlineFrames();
+setupSave($("save-html"), () => (playback.robot ? playback.robot.id : null), offline !== null);
+if (offline) {
+  $("status").textContent = "offline file"; $("status").className = "status live";
+  for (const m of offline) onFrame(m);
+} else connect();
 
 let lastFrame = performance.now();
 function frame(now) {
