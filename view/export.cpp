@@ -195,8 +195,8 @@ std::string offline_page(const AssetDirs& dirs, const nlohmann::json& frames) {
   static const std::regex importmap_re(R"re(<script type="importmap">[\s\S]*?</script>\s*)re");
   std::smatch m;
   if (!std::regex_search(html, m, importmap_re)) throw std::runtime_error(dirs.page + "/index.html: no import map");
-  const size_t map_at = m.position(0);
-  html.erase(map_at, m.length(0));
+  const std::string marker = "<!-- robozoo-view: three.js, import map, data -->\n";
+  html.replace(static_cast<size_t>(m.position(0)), static_cast<size_t>(m.length(0)), marker);
   ModuleSet modules(dirs);
   // Module entry points: <script type="module" src="/x.js"></script> -> an inline import.
   static const std::regex entry_re(R"re(<script type="module" src="(/[^"]+)"></script>)re");
@@ -229,9 +229,8 @@ std::string offline_page(const AssetDirs& dirs, const nlohmann::json& frames) {
                            modules.import_map(three_shim(dirs)).dump() +
                            "\n</script>\n<script type=\"application/json\" id=\"robozoo-data\">" + data +
                            "</script>\n";
-  // The import map must come before the page's first module script: at the old one's place (in <head>).
-  const size_t at = std::min(map_at, html.find("<script type=\"module\">"));
-  return html.insert(at, head);
+  // At the old import map's place (in <head>, before the page's first module script).
+  return html.replace(html.find(marker), marker.size(), head);
 }
 
 void write_whole_file(const std::string& path, const std::string& content) {

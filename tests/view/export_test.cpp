@@ -126,6 +126,8 @@ TEST(OfflinePage, CarriesTheFramesThePageAndThreeJs) {
   EXPECT_EQ(html.find("<script type=\"importmap\">"), html.rfind("<script type=\"importmap\">"));
   EXPECT_NE(html.find("<script type=\"module\">import \"rz/view.js\";</script>"), std::string::npos);
   EXPECT_NE(html.find("<style>"), std::string::npos);
+  for (size_t a = html.find("<style>"); a != std::string::npos; a = html.find("<style>", a + 1))  // scripts outside
+    EXPECT_EQ(html.substr(a, html.find("</style>", a) - a).find("<script"), std::string::npos);
   // three.min.js, in a classic script before the import map.
   const size_t three = html.find("<script>\n");
   ASSERT_NE(three, std::string::npos);
