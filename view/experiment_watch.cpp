@@ -6,6 +6,7 @@
 #include <regex>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 #include "evolve/analysis/ttest.hpp"
 #include "evolve/experiment/trial_plan.hpp"
@@ -171,6 +172,9 @@ void ExperimentWatch::read_trial(TrialProgress& t) {
 nlohmann::json ExperimentWatch::summary_json_locked() const {
   std::vector<TrialProgress> all;
   for (const auto& [name, t] : trials_) all.push_back(t);
+  std::sort(all.begin(), all.end(), [](const TrialProgress& a, const TrialProgress& b) {
+    return std::tie(a.arm, a.seed) < std::tie(b.arm, b.seed);  // recurrent-s2 before recurrent-s10
+  });
   nlohmann::json trials = nlohmann::json::array();
   for (const TrialProgress& t : all) {
     const double best = t.best_so_far.empty() ? kNaN : t.best_so_far.back();

@@ -134,9 +134,12 @@ TEST(ExperimentWatch, ReadsTheFolderAndFollowsGrowingLogs) {
   EXPECT_EQ(s["trials"][3]["generations"], 3);
   EXPECT_DOUBLE_EQ(s["arms"][1]["mean"][1].get<double>(), (5.1 + 6.0) / 2);
   // A new trial appears.
-  write_trial(d / "feedforward-s9.lcmlog", {0.5});
+  write_trial(d / "feedforward-s13.lcmlog", {0.5});
   EXPECT_TRUE(w.poll());
   EXPECT_EQ(w.trials().size(), 5u);
+  s = nlohmann::json::parse(w.summary());
+  EXPECT_EQ(s["trials"][1]["name"], "feedforward-s5");  // by arm, then seed: s13 after s5
+  EXPECT_EQ(s["trials"][2]["name"], "feedforward-s13");
 }
 
 TEST(ExperimentWatch, AFolderWithoutAnExperimentIsRefused) {

@@ -21,7 +21,7 @@ function draw() {
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
   g.clearRect(0, 0, w, h);
   if (!s) return;
-  const left = 48, right = 12, top = 10, bottom = 34 + 10 * s.tests.length;
+  const left = 48, right = 12, top = 10, bottom = 34 + 22 * s.tests.length;
   let gens = 1, lo = Infinity, hi = -Infinity;
   for (const t of s.trials) {
     gens = Math.max(gens, t.bsf.length);
@@ -64,11 +64,11 @@ function draw() {
   }
   // Significant generations: one row of marks per pair of arms, under the axis.
   s.tests.forEach((t, k) => {
-    const yy = h - bottom + 30 + 10 * k;
-    g.fillStyle = "#111";
-    for (const i of t.significant) g.fillRect(x(i) - 2, yy, 4, 6);
+    const yy = h - bottom + 34 + 22 * k;
     g.fillStyle = "#555";
-    g.fillText(`${t.a} vs ${t.b}: p < ${s.alpha}`, left + 4, yy + 7);
+    g.fillText(`${t.a} vs ${t.b}: p < ${s.alpha} at ${t.significant.length} of ${t.p.length} generations`, left, yy + 9);
+    g.fillStyle = "#111";
+    for (const i of t.significant) g.fillRect(x(i) - 2, yy + 13, 4, 7);
   });
 }
 
