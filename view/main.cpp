@@ -71,6 +71,7 @@ Route export_route(const std::string& log, const AssetDirs& dirs) {
     if (log.empty()) return HttpReply{409, "text/plain; charset=utf-8", "export needs a log: robozoo-view LOG\n", ""};
     ExportOptions o;
     o.log = log;
+    o.allow_truncated = true;  // --follow: the log may end inside its newest event
     if (m[2].matched) o.genome = std::stoll(m[2].str());
     try {
       const nlohmann::json frames = champion_frames(o);
