@@ -9,10 +9,13 @@ namespace robozoo::view {
 
 namespace {
 
-double round_to(double v, double unit) { return std::isfinite(v) ? std::round(v / unit) * unit : 0.0; }
+// Divided by the integer scale rather than multiplied by the unit: the result is
+// the double nearest the decimal (0.2342, not 0.23420000000000002), which JSON
+// writes in the fewest digits.
+double round_to(double v, double per_unit) { return std::isfinite(v) ? std::round(v * per_unit) / per_unit : 0.0; }
 
-constexpr double kPositionUnit = 1e-4;  // m
-constexpr double kValueUnit = 1e-4;     // neuron and sensor values
+constexpr double kPositionUnit = 1e4;  // per m: 0.1 mm
+constexpr double kValueUnit = 1e4;     // per unit of neuron and sensor values: 1e-4
 
 nlohmann::json values(const std::vector<double>& v) {
   nlohmann::json a = nlohmann::json::array();

@@ -8,6 +8,7 @@ import { Strip } from "/strip.js";
 import { Playback } from "/playback.js";
 import { Timeline } from "/timeline.js";
 import { CppnView } from "/cppn.js";
+import { offlineFrames, setupSave } from "/offline.js";
 
 const $ = (id) => document.getElementById(id);
 const scene = new Scene($("stage"));
@@ -218,7 +219,6 @@ function connect() {
     setTimeout(connect, 2000);
   };
 }
-connect();
 
 state.moment = parseMoment(location.hash);
 if (state.moment) state.following = false;
@@ -299,3 +299,12 @@ window.robozooView = {
              strip: time(() => strip.redraw()), chart: time(() => chart.draw()) };
   },
 };
+
+// Start: an exported file feeds its inlined frames, a served page connects (after every
+// declaration above, so that the first frame finds the page ready).
+const offline = offlineFrames();
+setupSave($("save-html"), () => (playback.robot ? playback.robot.id : null), offline !== null);
+if (offline) {
+  $("status").textContent = "offline file"; $("status").className = "status live";
+  for (const m of offline) onFrame(m);
+} else connect();
