@@ -18,23 +18,10 @@ const char* const kStatsFields[] = {"generation",   "evaluations",         "best
                                     "stderr_fitness", "best_so_far_fitness", "num_species",  "n_completed",
                                     "eval_seconds", "generation_seconds"};
 
+// Generations a morphology is kept for the poses that may still follow it.
+constexpr int32_t kMorphologyGenerationsKept = 2;
+
 uint64_t to_ns(int64_t microseconds) { return microseconds <= 0 ? 0 : static_cast<uint64_t>(microseconds) * 1000u; }
-
-/// Channels created on first use, in order of appearance.
-class Topics {
- public:
-  explicit Topics(mcap::Writer& w) : w_(w) {}
-  uint16_t get(const std::string& topic, const std::string& schema_name, const nlohmann::json& schema) {
-    const auto it = channels_.find(topic);
-    if (it != channels_.end()) return it->second;
-    const uint16_t s = w_.add_schema(schema_name, "jsonschema", schema.dump());
-    return channels_[topic] = w_.add_channel(topic, "json", s);
-  }
-
- private:
-  mcap::Writer& w_;
-  std::map<std::string, uint16_t> channels_;
-};
 
 }  // namespace
 
@@ -58,61 +45,73 @@ nlohmann::json generation_stats_schema() {
           {"additionalProperties", false}};
 }
 
-ExportReport export_mcap(const ScannedLog& log, const std::string& path, const ExportOptions& options) {
-  mcap::Writer writer(path, options.writer);
-  Topics topics(writer);
-  ExportReport report;
-  // The latest morphology of each (run, genome) and each run's target, for the scenes.
-  std::map<std::pair<std::string, int64_t>, morphology_t> morphologies;
-  std::map<std::string, Eigen::Vector3d> targets;
-  for (const LogRecord& r : log.contents.records) {
-    const std::string type = lcm_type_of_channel(r.channel);
-    nlohmann::json message;
-    std::string why;
-    if (type.empty() || !message_to_json(r.channel, r.data.data(), r.data.size(), message, why)) {
-      ++report.skipped;
-      continue;
-    }
-    const uint64_t t = to_ns(r.timestamp);
-    writer.write(topics.get(r.channel, "robozoo." + type, lcm_json_schema(type)), t, t, message.dump());
-    ++report.messages[r.channel];
-    if (r.channel == kChannelRun) {
-      run_t run{};
-      if (safe_decode(r.data.data(), r.data.size(), run, &why)) {
-        try {
-          targets[run.run_id] = run_target(run);
-        } catch (const std::exception&) {
-          // a configuration that does not parse: its scenes show the default target (SimParams)
-        }
-      }
-    } else if (r.channel == kChannelGeneration) {
-      writer.write(topics.get(options.stats_topic, "robozoo.generation_stats", generation_stats_schema()), t, t,
-                   generation_stats(message).dump());
-      ++report.messages[options.stats_topic];
-    } else if (r.channel == kChannelMorphology) {
-      morphology_t m{};
-      if (safe_decode(r.data.data(), r.data.size(), m, &why)) morphologies[{m.run_id, m.genome_id}] = std::move(m);
-    } else if (r.channel == kChannelPose) {
-      pose_t p{};
-      if (!safe_decode(r.data.data(), r.data.size(), p, &why)) continue;
-      const auto m = morphologies.find({p.run_id, p.genome_id});
-      if (m == morphologies.end() || m->second.num_spheres != p.num_spheres) {
-        ++report.poses_unshown;
-        continue;
-      }
-      const auto target = targets.find(p.run_id);
-      const SimParams defaults;
-      const Eigen::Vector3d where = target == targets.end()
-                                        ? Eigen::Vector3d(defaults.target_x, defaults.target_y, defaults.target_z)
-                                        : target->second;
-      writer.write(topics.get(options.scene_topic, kSceneUpdateSchemaName, scene_update_schema()), t, t,
-                   scene_update(m->second, p, where, t, options.scene).dump());
-      ++report.messages[options.scene_topic];
-    }
+McapExporter::McapExporter(const std::string& path, const ExportOptions& options)
+    : options_(options), writer_(path, options.writer) {}
+
+uint16_t McapExporter::topic(const std::string& name, const std::string& schema_name, const nlohmann::json& schema) {
+  const auto it = channels_.find(name);
+  if (it != channels_.end()) return it->second;
+  const uint16_t s = writer_.add_schema(schema_name, "jsonschema", schema.dump());
+  return channels_[name] = writer_.add_channel(name, "json", s);
+}
+
+void McapExporter::add(const LogRecord& r) {
+  const std::string type = lcm_type_of_channel(r.channel);
+  nlohmann::json message;
+  std::string why;
+  if (type.empty() || !message_to_json(r.channel, r.data.data(), r.data.size(), message, why)) {
+    ++report_.skipped;
+    return;
   }
-  writer.close();
-  report.chunks = writer.statistics().chunk_count;
-  return report;
+  const uint64_t t = to_ns(r.timestamp);
+  writer_.write(topic(r.channel, "robozoo." + type, lcm_json_schema(type)), t, t, message.dump());
+  ++report_.messages[r.channel];
+  if (r.channel == kChannelRun) {
+    run_t run{};
+    if (safe_decode(r.data.data(), r.data.size(), run, &why)) {
+      try {
+        targets_[run.run_id] = run_target(run);
+      } catch (const std::exception&) {
+        // a configuration that does not parse: its scenes show the default target (SimParams)
+      }
+    }
+  } else if (r.channel == kChannelGeneration) {
+    // Poses follow their morphology within a generation or two (a champion's
+    // trajectory may be logged after the next generation): older ones go.
+    const int32_t g = message.at("generation").get<int32_t>();
+    const std::string& run_id = message.at("run_id").get_ref<const std::string&>();
+    for (auto it = morphologies_.begin(); it != morphologies_.end();)
+      it = it->first.first == run_id && it->second.generation + kMorphologyGenerationsKept < g ? morphologies_.erase(it)
+                                                                                              : std::next(it);
+    writer_.write(topic(options_.stats_topic, "robozoo.generation_stats", generation_stats_schema()), t, t,
+                  generation_stats(message).dump());
+    ++report_.messages[options_.stats_topic];
+  } else if (r.channel == kChannelMorphology) {
+    morphology_t m{};
+    if (safe_decode(r.data.data(), r.data.size(), m, &why)) morphologies_[{m.run_id, m.genome_id}] = std::move(m);
+  } else if (r.channel == kChannelPose) {
+    pose_t p{};
+    if (!safe_decode(r.data.data(), r.data.size(), p, &why)) return;
+    const auto m = morphologies_.find({p.run_id, p.genome_id});
+    if (m == morphologies_.end() || m->second.num_spheres != p.num_spheres) {
+      ++report_.poses_unshown;
+      return;
+    }
+    const auto target = targets_.find(p.run_id);
+    const SimParams defaults;
+    const Eigen::Vector3d where = target == targets_.end()
+                                      ? Eigen::Vector3d(defaults.target_x, defaults.target_y, defaults.target_z)
+                                      : target->second;
+    writer_.write(topic(options_.scene_topic, kSceneUpdateSchemaName, scene_update_schema()), t, t,
+                  scene_update(m->second, p, where, t, options_.scene).dump());
+    ++report_.messages[options_.scene_topic];
+  }
+}
+
+ExportReport McapExporter::finish() {
+  writer_.close();
+  report_.chunks = writer_.statistics().chunk_count;
+  return report_;
 }
 
 }  // namespace robozoo

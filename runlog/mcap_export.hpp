@@ -6,6 +6,7 @@
 // times are the log's event timestamps, in ns.
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <string>
 
 #include "runlog/foxglove_scene.hpp"
@@ -33,8 +34,26 @@ nlohmann::json generation_stats(const nlohmann::json& generation);
 /// Its JSON Schema.
 nlohmann::json generation_stats_schema();
 
-/// Writes `log` to `path` (through PATH.partial). Throws std::runtime_error
-/// when the file cannot be written.
-ExportReport export_mcap(const ScannedLog& log, const std::string& path, const ExportOptions& options);
+/// Writes a log's events, one at a time, to an MCAP file (through
+/// PATH.partial: an exporter destroyed before finish() leaves no file).
+class McapExporter {
+ public:
+  /// Throws std::runtime_error when `path`'s .partial cannot be created.
+  McapExporter(const std::string& path, const ExportOptions& options);
+  void add(const LogRecord& event);
+  /// Completes the file and renames it to `path`. Throws std::runtime_error on a write error.
+  ExportReport finish();
+
+ private:
+  uint16_t topic(const std::string& name, const std::string& schema_name, const nlohmann::json& schema);
+
+  ExportOptions options_;
+  mcap::Writer writer_;
+  ExportReport report_;
+  std::map<std::string, uint16_t> channels_;
+  // The morphologies of the last generations by (run, genome) and each run's target, for the scenes.
+  std::map<std::pair<std::string, int64_t>, morphology_t> morphologies_;
+  std::map<std::string, Eigen::Vector3d> targets_;
+};
 
 }  // namespace robozoo

@@ -22,6 +22,7 @@
 #include "runlog/cppn_dot.hpp"
 #include "runlog/log_cat.hpp"
 #include "runlog/log_reader.hpp"
+#include "runlog/log_stream.hpp"
 #include "runlog/log_summary.hpp"
 #include "runlog/logged_genome.hpp"
 #include "runlog/mcap_export.hpp"
@@ -136,6 +137,29 @@ int main(int argc, char** argv) {
                 << (r.defect.empty() ? std::string() : "; DEFECT: " + r.defect) << "\n";
     return code;
   }
+  if (exporter->parsed()) {  // event by event: a log of any size in bounded memory
+    ExportOptions options;
+    options.writer.compression = mcap::parse_compression(compression);
+    options.writer.chunk_bytes = chunk_kib * 1024;
+    options.writer.library = "robozoo-log " + version_line();
+    try {
+      McapExporter mcap_out(output, options);
+      const int64_t events = for_each_event(log, [&](const LogRecord& r) { mcap_out.add(r); });
+      if (events == 0) throw std::runtime_error(log + ": no LCM events: not an LCM log");
+      const ExportReport r = mcap_out.finish();
+      int64_t total = 0;
+      for (const auto& [topic, n] : r.messages) total += n;
+      std::cerr << "robozoo-log: " << output << ": " << total << " messages on " << r.messages.size()
+                << " topics in " << r.chunks << " chunks";
+      if (r.skipped > 0) std::cerr << "; " << r.skipped << " events of other channels or undecodable, left out";
+      if (r.poses_unshown > 0) std::cerr << "; " << r.poses_unshown << " poses without their morphology, no scene";
+      std::cerr << "\n";
+    } catch (const std::exception& e) {
+      std::cerr << "robozoo-log: " << e.what() << ", not exported\n";
+      return 1;
+    }
+    return 0;
+  }
   ScannedLog scanned;
   try {
     scanned = scan_event_log(log);
@@ -147,30 +171,6 @@ int main(int argc, char** argv) {
     std::cerr << "robozoo-log: " << log << ": no LCM events in " << scanned.contents.file_bytes
               << " bytes: not an LCM log\n";
     return 1;
-  }
-  if (exporter->parsed()) {
-    if (!scanned.damage.empty()) {
-      std::cerr << "robozoo-log: " << log << ": damaged, not exported: " << scanned.damage.front().describe() << "\n";
-      return 1;
-    }
-    ExportOptions options;
-    options.writer.compression = mcap::parse_compression(compression);
-    options.writer.chunk_bytes = chunk_kib * 1024;
-    options.writer.library = "robozoo-log " + version_line();
-    try {
-      const ExportReport r = export_mcap(scanned, output, options);
-      int64_t total = 0;
-      for (const auto& [topic, n] : r.messages) total += n;
-      std::cerr << "robozoo-log: " << output << ": " << total << " messages on " << r.messages.size()
-                << " topics in " << r.chunks << " chunks";
-      if (r.skipped > 0) std::cerr << "; " << r.skipped << " events of other channels or undecodable, left out";
-      if (r.poses_unshown > 0) std::cerr << "; " << r.poses_unshown << " poses without their morphology, no scene";
-      std::cerr << "\n";
-    } catch (const std::exception& e) {
-      std::cerr << "robozoo-log: " << e.what() << "\n";
-      return 1;
-    }
-    return 0;
   }
   if (cppn->parsed()) {
     try {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -84,6 +85,26 @@ TEST_F(LogExport, FeedForwardRunWithPosesZstd) {
   const std::string line = export_and_check("feedforward", "zstd");
   EXPECT_NE(line.find("\"compression\":\"zstd\""), std::string::npos) << line;
   EXPECT_EQ(line.find("\"scenes\":0,"), std::string::npos) << "poses expected: " << line;
+}
+
+TEST_F(LogExport, FrameDrawnFromTheFileHasOneCirclePerSphere) {
+  export_and_check("feedforward", "zstd");
+  const fs::path mcap = work_dir() / "feedforward-zstd.mcap", svg = work_dir() / "frame.svg";
+  const Outcome o = run_shell("node '" + source("tools/mcap_frame.cjs") + "' '" + node_modules + "' '" + mcap.string() +
+                              "' '" + svg.string() + "' --index 0");
+  ASSERT_EQ(o.status, 0) << o.output;
+  const size_t at = o.output.find(" spheres");
+  ASSERT_NE(at, std::string::npos) << o.output;
+  const size_t from = o.output.rfind(' ', at - 1) + 1;
+  const int spheres = std::stoi(o.output.substr(from, at - from));
+  std::ifstream in(svg);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  int circles = 0;
+  for (size_t p = text.find("<circle "); p != std::string::npos; p = text.find("<circle ", p + 1)) ++circles;
+  EXPECT_GT(spheres, 0);
+  EXPECT_EQ(circles, spheres) << o.output;
+  EXPECT_NE(text.find("/robot/scene #0 "), std::string::npos);
+  EXPECT_EQ(run_shell("node '" + source("tools/mcap_frame.cjs") + "' --bogus").status, 2);
 }
 
 TEST_F(LogExport, RecurrentRunLz4) {
