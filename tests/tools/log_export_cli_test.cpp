@@ -1,6 +1,6 @@
 // robozoo-log export, checked with the MCAP format's own library: tiny runs of
 // every kind robozoo-evolve writes (feed-forward, recurrent, with poses, with
-// hardly any, every genome published, resumed) exported with each compression
+// hardly any, without any, every genome published, resumed) exported with each compression
 // and read by tests/tools/mcap_check.cjs under Debian's node with @mcap/core
 // and ajv (installed by tools/npm_deps.sh into build/npm).
 #include <gtest/gtest.h>
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "evolve/io/event_log.hpp"
 #include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
 
@@ -39,32 +40,39 @@ class LogExport : public ::testing::Test {
     ASSERT_EQ(npm.status, 0) << npm.output;
     node_modules = npm.output.substr(npm.output.rfind('\n', npm.output.size() - 2) + 1);
     while (!node_modules.empty() && node_modules.back() == '\n') node_modules.pop_back();
-    auto evolve = [](const std::string& name, std::vector<std::string> extra, int generations) {
-      const fs::path log = work_dir() / (name + ".lcmlog");
+  }
+
+  /// The log of one kind of run, evolved on first use (ctest runs each test in a process of its own).
+  static fs::path log_of(const std::string& name) {
+    if (logs.count(name)) return logs[name];
+    auto evolve = [](const fs::path& log, std::vector<std::string> extra, int generations) {
       std::vector<std::string> size = kTiny;
       size.insert(size.end(), {"--generations", std::to_string(generations)});
       const Outcome o = run_shell(join(evolve_args(log.string(), 2, extra, size)));
-      EXPECT_EQ(o.status, 0) << name << ": " << o.output;
-      logs[name] = log;
+      EXPECT_EQ(o.status, 0) << log << ": " << o.output;
     };
-    evolve("feedforward", {"--regime", "feedforward", "--pose-every", "10"}, 3);
-    evolve("recurrent", {"--regime", "recurrent", "--pose-every", "10"}, 3);
-    evolve("few-poses", {"--regime", "recurrent", "--pose-every", "1000000", "--publish-all"}, 2);
-    evolve("resumed", {"--regime", "recurrent", "--pose-every", "25"}, 2);
-    const Outcome more = run_shell(join(evolve_args(logs["resumed"].string(), 2,
-                                                    {"--regime", "recurrent", "--pose-every", "25", "--resume"},
-                                                    [] {
-                                                      std::vector<std::string> s = kTiny;
-                                                      s.insert(s.end(), {"--generations", "3"});
-                                                      return s;
-                                                    }())));
-    EXPECT_EQ(more.status, 0) << more.output;
+    const fs::path log = work_dir() / (name + ".lcmlog");
+    if (name == "feedforward") evolve(log, {"--regime", "feedforward", "--pose-every", "10"}, 3);
+    if (name == "recurrent") evolve(log, {"--regime", "recurrent", "--pose-every", "10"}, 3);
+    if (name == "few-poses") evolve(log, {"--regime", "recurrent", "--pose-every", "1000000", "--publish-all"}, 2);
+    if (name == "resumed") {
+      evolve(log, {"--regime", "recurrent", "--pose-every", "25"}, 2);
+      evolve(log, {"--regime", "recurrent", "--pose-every", "25", "--resume"}, 3);  // one generation more
+    }
+    if (name == "no-poses") {  // the recurrent run's log without its pose events
+      EventLogWriter out = EventLogWriter::create(log.string());
+      for (const LogRecord& r : read_event_log(log_of("recurrent").string()).records)
+        if (r.channel != "ROBOZOO_POSE") out.write(r.channel, r.data, r.timestamp);
+      out.sync();
+    }
+    EXPECT_TRUE(fs::exists(log)) << name;
+    return logs[name] = log;
   }
   static void TearDownTestSuite() { fs::remove_all(work_dir()); }
 
   /// Exports `name`'s log, then checks it with @mcap/core; returns mcap_check's line.
   std::string export_and_check(const std::string& name, const std::string& compression) {
-    const fs::path log = logs.at(name);
+    const fs::path log = log_of(name);
     const fs::path out = work_dir() / (name + "-" + compression + ".mcap");
     const fs::path summary = work_dir() / (name + "-summary.json");
     const Outcome s = run_shell("'" + bin("robozoo-log") + "' summary --json '" + log.string() + "' > '" +
@@ -119,6 +127,12 @@ TEST_F(LogExport, UncompressedChunks) {
 
 TEST_F(LogExport, EveryGenomePublishedFewPoses) { export_and_check("few-poses", "zstd"); }
 
+TEST_F(LogExport, RunWithoutPosesHasNoScenes) {
+  const std::string line = export_and_check("no-poses", "zstd");
+  EXPECT_NE(line.find("\"scenes\":0,"), std::string::npos) << line;
+  EXPECT_EQ(line.find("/robot/scene"), std::string::npos) << line;
+}
+
 TEST_F(LogExport, ResumedRun) {
   const std::string line = export_and_check("resumed", "zstd");
   EXPECT_NE(line.find("\"/generation/stats\":3"), std::string::npos) << line;
@@ -126,7 +140,7 @@ TEST_F(LogExport, ResumedRun) {
 
 TEST_F(LogExport, SmallChunksMakeManyChunks) {
   const fs::path out = work_dir() / "small-chunks.mcap";
-  const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + logs.at("feedforward").string() + "' -o '" +
+  const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + log_of("feedforward").string() + "' -o '" +
                               out.string() + "' --chunk-kib 1");
   ASSERT_EQ(e.status, 0) << e.output;
   const size_t at = e.output.find(" chunks");
@@ -137,7 +151,7 @@ TEST_F(LogExport, SmallChunksMakeManyChunks) {
 
 TEST_F(LogExport, DamagedLogIsRefusedWithOneLine) {
   const fs::path damaged = work_dir() / "damaged.lcmlog";
-  fs::copy_file(logs.at("recurrent"), damaged, fs::copy_options::overwrite_existing);
+  fs::copy_file(log_of("recurrent"), damaged, fs::copy_options::overwrite_existing);
   fs::resize_file(damaged, fs::file_size(damaged) - 100);  // the last event cut
   const fs::path out = work_dir() / "damaged.mcap";
   const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + damaged.string() + "' -o '" + out.string() + "'");
@@ -149,7 +163,7 @@ TEST_F(LogExport, DamagedLogIsRefusedWithOneLine) {
 }
 
 TEST_F(LogExport, UnwritablePathIsRefusedWithOneLine) {
-  const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + logs.at("recurrent").string() +
+  const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + log_of("recurrent").string() +
                               "' -o /nonexistent-dir/x.mcap");
   EXPECT_NE(e.status, 0);
   EXPECT_NE(e.output.find("/nonexistent-dir/x.mcap.partial: cannot create"), std::string::npos) << e.output;
@@ -157,7 +171,7 @@ TEST_F(LogExport, UnwritablePathIsRefusedWithOneLine) {
 }
 
 TEST_F(LogExport, UnknownCompressionAndOptionsAreRefused) {
-  const std::string log = logs.at("recurrent").string();
+  const std::string log = log_of("recurrent").string();
   EXPECT_NE(run_shell("'" + bin("robozoo-log") + "' export '" + log + "' -o /tmp/x.mcap --compression gzip").status, 0);
   EXPECT_NE(run_shell("'" + bin("robozoo-log") + "' export '" + log + "' -o /tmp/x.mcap --bogus").status, 0);
   EXPECT_NE(run_shell("'" + bin("robozoo-log") + "' export '" + log + "'").status, 0);  // no -o
