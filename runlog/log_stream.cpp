@@ -40,6 +40,8 @@ int64_t for_each_event(const std::string& path, const std::function<void(const L
     in.read(reinterpret_cast<char*>(bytes.data()), want);
     if (in.gcount() != want) throw std::runtime_error(path + ": cannot read the log at byte " + std::to_string(offset));
     const ScannedLog w = scan_event_log_bytes(bytes);
+    if (at_end && events == 0 && w.contents.records.empty())
+      throw std::runtime_error(path + ": no LCM events in " + std::to_string(size) + " bytes: not an LCM log");
     // Damage before the window's last complete event is real; after it, it may
     // be an event the window cut, read again by the next window (unless at the end).
     for (const LogDamage& d : w.damage)

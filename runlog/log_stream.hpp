@@ -18,7 +18,7 @@ struct LogStreamParams {
 
 /// Calls `on_event` for every event of the log at `path`, in file order, and
 /// returns how many. Throws std::runtime_error naming the path when the file
-/// cannot be read, and at the first damage (garbage, a cut last event, missing
+/// cannot be read or holds no event at all (not an LCM log), and at the first damage (garbage, a cut last event, missing
 /// event numbers), with its description; events before it were handed on.
 int64_t for_each_event(const std::string& path, const std::function<void(const LogRecord&)>& on_event,
                        const LogStreamParams& params = {});

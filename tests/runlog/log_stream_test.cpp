@@ -101,6 +101,18 @@ TEST_F(LogStream, MissingEventNumbersAcrossWindowsAreDamage) {
   EXPECT_THROW(read(90), std::runtime_error);
 }
 
+TEST_F(LogStream, FileWithoutEventsIsNotAnLcmLog) {
+  write({'h', 'e', 'l', 'l', 'o', '\n'});
+  try {
+    read(64);
+    FAIL() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no LCM events in 6 bytes: not an LCM log"), std::string::npos) << e.what();
+  }
+  write({});
+  EXPECT_TRUE(read(64).empty());  // an empty file: nothing to hand on, no damage
+}
+
 TEST_F(LogStream, MissingFileNamesThePath) {
   try {
     for_each_event("/nonexistent/x.lcmlog", [](const LogRecord&) {});
