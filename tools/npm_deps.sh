@@ -19,11 +19,11 @@ if [ -d "$dir/node_modules" ] && [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want
   echo "$dir/node_modules"
   exit 0
 fi
-cp "$here/npm/package.json" "$here/npm/package-lock.json" "$dir/"
 # Several tests may call this at once: one installs, the others wait for it.
 exec 9>"$dir/.lock"
 flock 9
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
+  cp "$here/npm/package.json" "$here/npm/package-lock.json" "$dir/"
   (cd "$dir" && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error >&2)
   echo "$want" >"$stamp"
 fi
