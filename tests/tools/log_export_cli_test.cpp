@@ -138,6 +138,25 @@ TEST_F(LogExport, ResumedRun) {
   EXPECT_NE(line.find("\"/generation/stats\":3"), std::string::npos) << line;
 }
 
+TEST_F(LogExport, CheckerCatchesAFlippedByte) {
+  export_and_check("recurrent", "none");
+  const fs::path good = work_dir() / "recurrent-none.mcap", bad = work_dir() / "flipped.mcap";
+  fs::copy_file(good, bad, fs::copy_options::overwrite_existing);
+  {
+    std::fstream f(bad, std::ios::in | std::ios::out | std::ios::binary);
+    const auto middle = static_cast<std::streamoff>(fs::file_size(bad) / 2);
+    f.seekg(middle);
+    const char c = static_cast<char>(f.get());
+    f.seekp(middle);
+    f.put(static_cast<char>(c ^ 0x01));
+  }
+  const fs::path summary = work_dir() / "recurrent-summary.json";
+  const Outcome c = run_shell("node '" + source("tests/tools/mcap_check.cjs") + "' '" + node_modules + "' '" +
+                              bad.string() + "' '" + summary.string() + "'");
+  EXPECT_NE(c.status, 0) << c.output;
+  EXPECT_NE(c.output.find("CRC"), std::string::npos) << c.output;
+}
+
 TEST_F(LogExport, SmallChunksMakeManyChunks) {
   const fs::path out = work_dir() / "small-chunks.mcap";
   const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + log_of("feedforward").string() + "' -o '" +
