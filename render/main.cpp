@@ -17,14 +17,14 @@ extern "C" {
 #include <stdexcept>
 
 #include "evolve/io/bus.hpp"
-#include "render/bench.hpp"
-#include "render/live.hpp"
+#include "render/video/bench.hpp"
+#include "render/live/live.hpp"
 #include "runlog/log_source.hpp"
-#include "render/png_io.hpp"
+#include "render/gl/png_io.hpp"
 #include "runlog/progress_bar.hpp"
 #include "runlog/selection.hpp"
-#include "render/video_subject.hpp"
-#include "render/zoo_sheet.hpp"
+#include "render/video/video_subject.hpp"
+#include "render/zoo/zoo_sheet.hpp"
 #include "evolve/core/version.hpp"
 #include "evolve/run/stop_signals.hpp"
 
