@@ -16,7 +16,7 @@
 #include <sstream>
 #include <thread>
 
-#include "render/png_io.hpp"
+#include "render/gl/png_io.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/support/browser.hpp"
 #include "tests/support/evolve_runs.hpp"

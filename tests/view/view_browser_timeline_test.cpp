@@ -14,7 +14,7 @@
 #include <regex>
 #include <thread>
 
-#include "render/png_io.hpp"
+#include "render/gl/png_io.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/browser.hpp"
