@@ -17,14 +17,14 @@ extern "C" {
 #include <stdexcept>
 
 #include "evolve/io/bus.hpp"
-#include "render/bench.hpp"
-#include "render/live.hpp"
+#include "render/video/bench.hpp"
+#include "render/live/live.hpp"
 #include "runlog/log_source.hpp"
-#include "render/png_io.hpp"
+#include "render/gl/png_io.hpp"
 #include "runlog/progress_bar.hpp"
 #include "runlog/selection.hpp"
-#include "render/video_subject.hpp"
-#include "render/zoo_sheet.hpp"
+#include "render/video/video_subject.hpp"
+#include "render/zoo/zoo_sheet.hpp"
 #include "evolve/core/version.hpp"
 #include "util/stop_signals.hpp"
 
@@ -33,80 +33,62 @@ using namespace robozoo::render;
 
 namespace {
 
-struct Size {
-  int width = 0, height = 0;
-};
-
-/// "WxH" -> size; CLI11 check.
-std::string parse_size(const std::string& s, Size& out) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w <= 0 || h <= 0)
-    return "expected WIDTHxHEIGHT, e.g. 1280x720, got '" + s + "'";
-  out = {w, h};
-  return "";
+/// Binds a "WxH" option to two size fields (px); its default is their values.
+/// A malformed value throws std::invalid_argument naming the option.
+CLI::Option* add_size_option(CLI::App* app, const std::string& name, int& width, int& height,
+                             const std::string& help) {
+  return app
+      ->add_option_function<std::string>(
+          name,
+          [name, &width, &height](const std::string& s) {
+            int w = 0, h = 0;
+            char x = 0, extra = 0;
+            if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w <= 0 ||
+                h <= 0)
+              throw std::invalid_argument(name + ": expected WIDTHxHEIGHT, e.g. 1280x720, got '" + s + "'");
+            width = w;
+            height = h;
+          },
+          help)
+      ->default_str(std::to_string(width) + "x" + std::to_string(height));
 }
 
-struct VideoArgs {
-  std::string size = "1280x720";
-  int fps = 25;
-  double speed = 1.0;
-  double hold = 0.0;
-  int crf = 23;
-  std::string preset = "veryfast";
-  int threads = 1;
-  int samples = 0;
+/// What the video options need besides VideoOptions' own fields: --fast, and
+/// whether --preset or --threads were given (--fast refuses them).
+struct FastFlag {
   bool fast = false;
-  bool no_overlay = false, no_grid = false;
-  std::string font_dir;
-  const CLI::Option* preset_option = nullptr;   // to tell a --preset given from the default
+  const CLI::Option* preset_option = nullptr;
   const CLI::Option* threads_option = nullptr;
 };
 
-void add_video_options(CLI::App* app, VideoArgs& a) {
-  app->add_option("--size", a.size, "video size WIDTHxHEIGHT, both even")->capture_default_str();
-  app->add_option("--fps", a.fps, "frames per second")->capture_default_str();
-  app->add_option("--speed", a.speed, "simulated seconds per second of video (1: real time)")->capture_default_str();
-  app->add_option("--hold", a.hold, "show the last frame this many seconds longer")->capture_default_str();
-  app->add_option("--crf", a.crf, "x264 quality, 0-51, lower is better")->capture_default_str();
-  a.preset_option = app->add_option("--preset", a.preset, "x264 preset")->capture_default_str();
-  a.threads_option = app->add_option("--threads", a.threads, "encoder threads; libx264's output depends on them: 1 gives the same bytes on every machine, 0 lets "
+void add_video_options(CLI::App* app, VideoOptions& o, FastFlag& f) {
+  add_size_option(app, "--size", o.encoder.width, o.encoder.height, "video size WIDTHxHEIGHT, both even");
+  app->add_option("--fps", o.encoder.fps, "frames per second")->capture_default_str();
+  app->add_option("--speed", o.speed, "simulated seconds per second of video (1: real time)")->capture_default_str();
+  app->add_option("--hold", o.hold, "show the last frame this many seconds longer")->capture_default_str();
+  app->add_option("--crf", o.encoder.crf, "x264 quality, 0-51, lower is better")->capture_default_str();
+  f.preset_option = app->add_option("--preset", o.encoder.preset, "x264 preset")->capture_default_str();
+  f.threads_option = app->add_option("--threads", o.encoder.threads, "encoder threads; libx264's output depends on them: 1 gives the same bytes on every machine, 0 lets "
                   "libx264 choose by the machine's cores")->capture_default_str();
-  app->add_flag("--fast", a.fast,
+  app->add_flag("--fast", f.fast,
                 std::string("faster encoding, other bytes: x264 preset ") + kFastPreset +
                     " on libx264's own thread count (--threads 0) instead of veryfast on one thread; a larger file at "
                     "the same --crf, and the output is no longer byte-reproducible across machines (it follows the "
                     "cores); not with --preset or --threads");
-  app->add_option("--samples", a.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
-  app->add_flag("--no-overlay", a.no_overlay, "no text over the picture");
-  app->add_flag("--no-grid", a.no_grid, "no grid on the ground");
-  app->add_option("--font-dir", a.font_dir, "folder with DejaVuSans.ttf and DejaVuSans-Bold.ttf");
+  app->add_option("--samples", o.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
+  app->add_flag_callback("--no-overlay", [&o] { o.overlay = false; }, "no text over the picture");
+  app->add_flag_callback("--no-grid", [&o] { o.grid = false; }, "no grid on the ground");
+  app->add_option("--font-dir", o.font_dir, "folder with DejaVuSans.ttf and DejaVuSans-Bold.ttf");
 }
 
-VideoOptions video_options(const VideoArgs& a) {
-  VideoOptions o;
-  Size s;
-  const std::string bad = parse_size(a.size, s);
-  if (!bad.empty()) throw std::invalid_argument("--size: " + bad);
-  o.encoder.width = s.width;
-  o.encoder.height = s.height;
-  o.encoder.fps = a.fps;
-  o.encoder.crf = a.crf;
-  o.encoder.preset = a.preset;
-  o.encoder.threads = a.threads;
-  if (a.fast) {
-    if (a.preset_option->count() > 0 || a.threads_option->count() > 0)
+/// Applies --fast to the parsed options and checks them.
+void finish_video_options(VideoOptions& o, const FastFlag& f) {
+  if (f.fast) {
+    if (f.preset_option->count() > 0 || f.threads_option->count() > 0)
       throw std::invalid_argument("--fast sets the x264 preset and threads itself: give --fast or --preset/--threads, not both");
     o.encoder = fast_encoder(o.encoder);
   }
-  o.speed = a.speed;
-  o.hold = a.hold;
-  o.samples = a.samples;
-  o.overlay = !a.no_overlay;
-  o.grid = !a.no_grid;
-  o.font_dir = a.font_dir;
   validate(o);
-  return o;
 }
 
 void report_log(const LoadedLog& log) {
@@ -121,30 +103,12 @@ struct ZooArgs {
   bool best_of_run = false;
   int top = 0;
   int generation = -1;
-  std::string cell = "360x270";
-  int columns = 0;
-  std::string title;
-  bool same_scale = false, no_grid = false, allow_truncated = false;
-  int samples = 4;
-  int font_size = 15;
-  std::string font_dir;
+  bool allow_truncated = false;
+  ZooOptions sheet;
 };
 
 int run_zoo(const ZooArgs& a) {
-  ZooOptions o;
-  Size cell;
-  const std::string bad = parse_size(a.cell, cell);
-  if (!bad.empty()) throw std::invalid_argument("--cell: " + bad);
-  o.cell_width = cell.width;
-  o.cell_height = cell.height;
-  o.columns = a.columns;
-  o.title = a.title;
-  o.same_scale = a.same_scale;
-  o.grid = !a.no_grid;
-  o.samples = a.samples;
-  o.font_size = a.font_size;
-  o.font_dir = a.font_dir;
-  validate(o);
+  validate(a.sheet);
   const int modes = (a.best_of_run ? 1 : 0) + (a.top > 0 ? 1 : 0) + (a.generation >= 0 ? 1 : 0);
   if (modes > 1) throw std::invalid_argument("choose one of --best-of-run, --top and --generation");
 
@@ -174,7 +138,7 @@ int run_zoo(const ZooArgs& a) {
   if (picks.empty()) throw std::runtime_error("no log holds " + what + " (ROBOZOO_GENOME with its ROBOZOO_MORPHOLOGY)");
   std::vector<RobotCard> cards;
   for (const Pick& p : picks) cards.push_back(make_card(*p.run, *p.genome));
-  write_png(a.out, render_zoo(cards, o));
+  write_png(a.out, render_zoo(cards, a.sheet));
   std::cerr << "robozoo-render: " << a.out << " (" << cards.size() << " robots)\n";
   return 0;
 }
@@ -187,11 +151,13 @@ struct VideoCmdArgs {
   int64_t genome = -1;
   int generation = -1;
   bool resimulate = false, allow_truncated = false, quiet = false;
-  VideoArgs video;
+  VideoOptions video;
+  FastFlag fast;
 };
 
-int run_video(const VideoCmdArgs& a) {
-  const VideoOptions o = video_options(a.video);
+int run_video(VideoCmdArgs& a) {
+  finish_video_options(a.video, a.fast);
+  const VideoOptions& o = a.video;
   LoadOptions lo;
   lo.allow_truncated = a.allow_truncated;
   const LoadedLog log = load_log(a.log, lo);
@@ -234,28 +200,15 @@ int run_video(const VideoCmdArgs& a) {
 // ---- live ------------------------------------------------------------------
 
 struct LiveArgs {
-  std::string url = robozoo::kDefaultLcmUrl;
-  std::string out;
-  double stream_timeout = 3.0;
-  double idle_exit = 0.0;
-  std::string picture_size = "640x480";
-  VideoArgs video;
+  LiveOptions options;
+  FastFlag fast;
 };
 
-int run_live_command(const LiveArgs& a) {
-  LiveOptions o;
-  o.url = a.url;
-  o.out_dir = a.out;
-  o.stream_timeout = a.stream_timeout;
-  o.idle_exit = a.idle_exit;
-  Size pic;
-  const std::string bad = parse_size(a.picture_size, pic);
-  if (!bad.empty()) throw std::invalid_argument("--picture-size: " + bad);
-  o.picture.cell_width = pic.width;
-  o.picture.cell_height = pic.height;
-  o.picture.font_size = std::max(12, pic.height / 28);
-  o.picture.font_dir = a.video.font_dir;
-  o.video = video_options(a.video);
+int run_live_command(LiveArgs& a) {
+  LiveOptions& o = a.options;
+  o.picture.font_size = std::max(12, o.picture.cell_height / 28);
+  o.picture.font_dir = o.video.font_dir;
+  finish_video_options(o.video, a.fast);
   validate(o);
   // SIGINT and SIGTERM end the loop cleanly: blocked here, before any thread
   // starts, and polled by the loop (no handler, no global flag).
@@ -267,18 +220,15 @@ int run_live_command(const LiveArgs& a) {
 // ---- bench -----------------------------------------------------------------
 
 struct BenchArgs {
-  std::string log;
-  int frames = 100;
-  VideoArgs video;
+  BenchOptions options;
+  FastFlag fast;
 };
 
-int run_bench_command(const BenchArgs& a) {
-  if (a.video.fast)
+int run_bench_command(BenchArgs& a) {
+  if (a.fast.fast)
     throw std::invalid_argument("bench measures the encoder settings given and --fast's side by side: leave out --fast");
-  BenchOptions o;
-  o.log = a.log;
-  o.frames = a.frames;
-  o.video = video_options(a.video);
+  BenchOptions& o = a.options;
+  finish_video_options(o.video, a.fast);
   print(std::cout, run_bench(o));
   return 0;
 }
@@ -298,14 +248,14 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000));
   zc->add_option("--generation", zoo.generation, "the champion of generation G of each run")
       ->check(CLI::Range(0, 1000000000));
-  zc->add_option("--cell", zoo.cell, "size of each robot's picture, WIDTHxHEIGHT")->capture_default_str();
-  zc->add_option("--columns", zoo.columns, "robots per row (0: automatic)")->capture_default_str();
-  zc->add_option("--title", zoo.title, "a title above the grid");
-  zc->add_flag("--same-scale", zoo.same_scale, "one camera distance for all robots (sizes comparable)");
-  zc->add_flag("--no-grid", zoo.no_grid, "no grid on the ground");
-  zc->add_option("--samples", zoo.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
-  zc->add_option("--font-size", zoo.font_size, "caption size in pixels")->capture_default_str();
-  zc->add_option("--font-dir", zoo.font_dir, "folder with DejaVuSans.ttf and DejaVuSans-Bold.ttf");
+  add_size_option(zc, "--cell", zoo.sheet.cell_width, zoo.sheet.cell_height, "size of each robot's picture, WIDTHxHEIGHT");
+  zc->add_option("--columns", zoo.sheet.columns, "robots per row (0: automatic)")->capture_default_str();
+  zc->add_option("--title", zoo.sheet.title, "a title above the grid");
+  zc->add_flag("--same-scale", zoo.sheet.same_scale, "one camera distance for all robots (sizes comparable)");
+  zc->add_flag_callback("--no-grid", [&zoo] { zoo.sheet.grid = false; }, "no grid on the ground");
+  zc->add_option("--samples", zoo.sheet.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
+  zc->add_option("--font-size", zoo.sheet.font_size, "caption size in pixels")->capture_default_str();
+  zc->add_option("--font-dir", zoo.sheet.font_dir, "folder with DejaVuSans.ttf and DejaVuSans-Bold.ttf");
   zc->add_flag("--allow-truncated", zoo.allow_truncated, "use the complete events of a log that ends mid-event");
 
   VideoCmdArgs video;
@@ -317,38 +267,43 @@ int main(int argc, char** argv) {
   vc->add_flag("--resimulate", video.resimulate, "ignore logged poses: re-simulate the genome");
   vc->add_flag("--allow-truncated", video.allow_truncated, "use the complete events of a log that ends mid-event");
   vc->add_flag("-q,--quiet", video.quiet, "no progress bar, no summary");
-  add_video_options(vc, video.video);
+  add_video_options(vc, video.video, video.fast);
 
-  LiveArgs live;
+  LiveArgs live_args;
+  LiveOptions& live = live_args.options;
+  live.url = robozoo::kDefaultLcmUrl;
+  live.picture.cell_width = 640;
+  live.picture.cell_height = 480;
   CLI::App* lc = app.add_subcommand("live", "latest.png and one video per new champion, from an LCM bus");
   lc->add_option("--lcm-url", live.url, "LCM URL to listen on")->capture_default_str();
-  lc->add_option("--out", live.out, "output folder")->required();
+  lc->add_option("--out", live.out_dir, "output folder")->required();
   lc->add_option("--stream-timeout", live.stream_timeout, "seconds of silence that complete a pose stream")
       ->capture_default_str();
   lc->add_option("--idle-exit", live.idle_exit, "exit after this many seconds without messages (0: run until stopped)")
       ->capture_default_str();
-  lc->add_option("--picture-size", live.picture_size, "size of latest.png's picture, WIDTHxHEIGHT")->capture_default_str();
-  add_video_options(lc, live.video);
+  add_size_option(lc, "--picture-size", live.picture.cell_width, live.picture.cell_height,
+                  "size of latest.png's picture, WIDTHxHEIGHT");
+  add_video_options(lc, live.video, live_args.fast);
 
   BenchArgs bench;
   CLI::App* bc = app.add_subcommand("bench", "benchmark: drawing and encoding frames per second, one champion's video; "
                                     "the encoder settings given (default: the default's) against --fast's, same frames");
-  bc->add_option("log", bench.log, "robozoo-evolve log (its best champion is drawn)")->required();
-  bc->add_option("--frames", bench.frames, "frames timed")->capture_default_str()->check(CLI::Range(1, 100000));
-  add_video_options(bc, bench.video);
+  bc->add_option("log", bench.options.log, "robozoo-evolve log (its best champion is drawn)")->required();
+  bc->add_option("--frames", bench.options.frames, "frames timed")->capture_default_str()->check(CLI::Range(1, 100000));
+  add_video_options(bc, bench.options.video, bench.fast);
 
   // libx264 and the MP4 muxer report every file on stderr; keep errors only.
   av_log_set_level(AV_LOG_ERROR);
   try {
-    app.set_version_flag("--version", robozoo::version_line());
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
-  try {
+    try {
+      app.set_version_flag("--version", robozoo::version_line());
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      return app.exit(e);
+    }
     if (zc->parsed()) return run_zoo(zoo);
     if (vc->parsed()) return run_video(video);
-    if (lc->parsed()) return run_live_command(live);
+    if (lc->parsed()) return run_live_command(live_args);
     if (bc->parsed()) return run_bench_command(bench);
   } catch (const std::invalid_argument& e) {
     std::cerr << "robozoo-render: " << e.what() << "\n";

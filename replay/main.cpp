@@ -33,24 +33,22 @@ using namespace robozoo;
 
 struct CheckArgs {
   std::string log;
-  double tolerance = 0.0;
-  bool json = false, force = false, all = false, quiet = false, progress = false, no_progress = false;
-  size_t keep = 20;
+  CheckOptions options;  ///< --tolerance, --force, --all-genomes, --max-mismatches (shared by --lcm-url and --full)
+  bool json = false, quiet = false, progress = false, no_progress = false;
   bool full = false;  ///< re-run the whole evolution and compare every message
-  std::string lcm_url;  ///< check --lcm-url: follow a live run instead of a log
-  double idle_exit = 0.0;
-  std::vector<std::string> sets;
+  FullCheckOptions full_options;  ///< --generations
   int workers = 0;    ///< --full: worker processes (0: one per core)
-  int max_generations = -1;
+  std::string lcm_url;  ///< check --lcm-url: follow a live run instead of a log
+  LiveCheckOptions live_options;  ///< --set
+  double idle_exit = 0.0;
 };
 
 /// --lcm-url: follow a run on the bus and check its champions as they come.
 int run_live_check(const CheckArgs& a) {
-  LiveCheckOptions o;
-  o.tolerance = a.tolerance;
-  o.force = a.force;
-  o.sets = a.sets;
-  o.keep = a.keep;
+  LiveCheckOptions o = a.live_options;
+  o.tolerance = a.options.tolerance;
+  o.force = a.options.force;
+  o.keep = a.options.keep;
   try {
     for (const auto& kv : o.sets) config_assignment(kv);  // a bad assignment is said before the bus starts
   } catch (const std::exception& e) {
@@ -73,9 +71,8 @@ int run_live_check(const CheckArgs& a) {
 
 /// --full: the re-run, on local workers or (session) on the ranks of an MPI job.
 int run_full_check(const CheckArgs& a, const MpiSession* session) {
-  FullCheckOptions o;
-  o.force = a.force;
-  o.max_generations = a.max_generations;
+  FullCheckOptions o = a.full_options;
+  o.force = a.options.force;
   const bool bar_on = !a.quiet && !a.no_progress && (a.progress || ::isatty(STDERR_FILENO));
   ProgressBar bar(std::cerr, "re-running");
   FullCheckProgress progress = [&](int done, int total, double elapsed) {
@@ -119,7 +116,7 @@ struct PlayArgs {
   std::string log;
   std::string lcm_url = kDefaultLcmUrl;
   PlayOptions options;
-  bool log_time = false, quiet = false;
+  bool quiet = false;
 };
 
 struct SimArgs {
@@ -130,11 +127,7 @@ struct SimArgs {
 };
 
 int run_check(const CheckArgs& a) {
-  CheckOptions o;
-  o.tolerance = a.tolerance;
-  o.force = a.force;
-  o.all_genomes = a.all;
-  o.keep = a.keep;
+  const CheckOptions& o = a.options;
   const bool bar_on = !a.quiet && !a.no_progress && (a.progress || ::isatty(STDERR_FILENO));
   ProgressBar bar(std::cerr, "checking");
   const auto t0 = std::chrono::steady_clock::now();
@@ -174,8 +167,7 @@ int run_play(const PlayArgs& a) {
   ScannedLog scanned;
   LogIndex index;
   if (!load(a.log, a.quiet, scanned, index)) return 2;
-  PlayOptions o = a.options;
-  o.pace_poses_by_sim_time = !a.log_time;
+  const PlayOptions& o = a.options;
   try {
     plan_pass(scanned.contents, index, o);  // bad options are reported before the bus starts
     Bus bus(a.lcm_url);
@@ -281,17 +273,17 @@ int main(int argc, char** argv) {
   check->add_option("--idle-exit", c.idle_exit, "--lcm-url: finish after this many seconds without a message (0: "
                                                 "at a signal only)")
       ->check(CLI::NonNegativeNumber);
-  check->add_option("--set", c.sets,
+  check->add_option("--set", c.live_options.sets,
                     "--lcm-url: change a key of the run's configuration before re-computing (KEY=VALUE, as "
                     "robozoo-evolve --set): what would differ under another setting")
       ->take_all();
-  check->add_option("--tolerance", c.tolerance,
+  check->add_option("--tolerance", c.options.tolerance,
                     "allowed error |a-b|/max(1,|a|,|b|) for logs made on another machine (default 0: bit for bit)")
       ->check(CLI::NonNegativeNumber);
   check->add_flag("--json", c.json, "print the report as JSON");
-  check->add_flag("--force", c.force, "check runs written by another robozoo version");
-  check->add_flag("--all-genomes", c.all, "check every logged genome (--publish-all runs), not only champions");
-  check->add_option("--max-mismatches", c.keep, "differences listed per genome in the JSON report")
+  check->add_flag("--force", c.options.force, "check runs written by another robozoo version");
+  check->add_flag("--all-genomes", c.options.all_genomes, "check every logged genome (--publish-all runs), not only champions");
+  check->add_option("--max-mismatches", c.options.keep, "differences listed per genome in the JSON report")
       ->check(CLI::Range(1, 1000000));
   check->add_flag("--progress", c.progress, "show the progress bar even when stderr is not a terminal");
   check->add_flag("--no-progress", c.no_progress, "no progress bar");
@@ -301,7 +293,7 @@ int main(int argc, char** argv) {
                   "message with the log; costs as much time as the run took to evolve");
   check->add_option("--workers", c.workers, "--full: worker processes (default: one per core)")
       ->check(CLI::Range(1, 4096));
-  check->add_option("--generations", c.max_generations, "--full: re-run at most this many generations")
+  check->add_option("--generations", c.full_options.max_generations, "--full: re-run at most this many generations")
       ->check(CLI::Range(1, 1000000000));
   bool mpi_flag = false;
   check->add_flag("--mpi", mpi_flag, "--full: evaluate on the ranks of an MPI job (mpirun -np N, N >= 2)");
@@ -319,7 +311,7 @@ int main(int argc, char** argv) {
   playc->add_flag("--loop", p.options.loop, "start again after the last event, until interrupted");
   playc->add_option("--start-generation", p.options.start_generation, "skip the events of earlier generations")
       ->check(CLI::NonNegativeNumber);
-  playc->add_flag("--log-time", p.log_time,
+  playc->add_flag_callback("--log-time", [&p] { p.options.pace_poses_by_sim_time = false; },
                   "pace poses by their log timestamps (a trajectory is logged in one burst) instead of their "
                   "simulated time");
   playc->add_flag("--quiet,-q", p.quiet, "no messages");
@@ -354,7 +346,7 @@ int main(int argc, char** argv) {
   }
   if (check->parsed() && check->count("--lcm-url")) {
     if (c.lcm_url.empty()) c.lcm_url = kDefaultLcmUrl;
-    if (!c.log.empty() || c.full || c.all) {
+    if (!c.log.empty() || c.full || c.options.all_genomes) {
       std::cerr << "robozoo-replay: check --lcm-url follows the bus: no LOG, --full or --all-genomes\n";
       return 2;
     }
@@ -368,7 +360,7 @@ int main(int argc, char** argv) {
     std::cerr << "robozoo-replay: check needs a LOG (or --lcm-url)\n";
     return 2;
   }
-  if (check->parsed() && (c.idle_exit > 0 || !c.sets.empty())) {
+  if (check->parsed() && (c.idle_exit > 0 || !c.live_options.sets.empty())) {
     std::cerr << "robozoo-replay: --idle-exit and --set are for check --lcm-url\n";
     return 2;
   }
@@ -381,7 +373,7 @@ int main(int argc, char** argv) {
       std::cerr << "robozoo-replay: --mpi needs at least 2 ranks (rank 0 compares, ranks 1.. evaluate)\n";
       return 2;
     }
-    if (c.tolerance > 0 || c.all) {
+    if (c.options.tolerance > 0 || c.options.all_genomes) {
       std::cerr << "robozoo-replay: --full compares every message bit for bit; --tolerance and --all-genomes do not "
                    "apply\n";
       return 2;

@@ -205,7 +205,8 @@ void copy_run(const std::string& log, const std::string& dest) {
   for (const auto& [from, to] : files) fs::copy_file(from, to);
 }
 
-int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
+/// The run measured: the configuration file, with the flags given (or every flag without a file).
+RunConfig bench_config(const CLI::App& app, const Options& o) {
   RunConfig config;
   if (!o.config_file.empty()) config = load_config_file(o.config_file, config);
   if (app.count("--regime") || o.config_file.empty()) config.regime = regime_from_name(o.regime);
@@ -214,9 +215,27 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
   if (app.count("--generations") || o.config_file.empty()) config.generations = o.generations;
   if (app.count("--steps") || o.config_file.empty()) config.eval.sim.steps = o.steps;
   validate_config(config);
+  return config;
+}
 
-  std::string folder;
+/// What a measured run left: its configuration, options, per-generation records and the ranks' figures.
+struct MeasuredRun {
+  RunConfig config;
   EvolveOptions opts;
+  std::vector<GenerationRecord> records;  // with the progress reports' timings
+  int resumed_at = -1;                    // the generation a --resume run continued at; -1: a new run
+  MpiTransportStats transport_stats;
+  std::vector<MpiWorkerStats> workers;    // by rank
+};
+
+/// Runs the evolution as robozoo-evolve --mpi does (or continues --resume's copy) on the worker
+/// ranks, recording every job; then gathers the worker ranks' figures.
+MeasuredRun measure_run(const MpiSession& session, const CLI::App& app, const Options& o) {
+  MeasuredRun m;
+  RunConfig& config = m.config;
+  config = bench_config(app, o);
+  std::string folder;
+  EvolveOptions& opts = m.opts;
   if (o.log_path.empty()) {
     char tmpl[] = "/tmp/robozoo-mpi-bench-XXXXXX";
     if (!::mkdtemp(tmpl)) throw std::runtime_error("cannot create a temporary folder");
@@ -238,10 +257,7 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
   tp.record_jobs = true;
   auto owned = std::make_unique<MpiTransport>(tp);
   MpiTransport& transport = *owned;
-  std::vector<GenerationRecord> records;
   std::vector<ProgressReport> reports;
-  int resumed_at = -1;
-  MpiTransportStats transport_stats;
   {
     PoolEvaluator pool(std::move(owned), 600.0);
     RecordingEvaluator evaluator(pool, transport);
@@ -272,36 +288,27 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
       }
       evo.settle();
     }
-    resumed_at = evo.resumed() ? evo.start_generation() : -1;
-    records = evaluator.records;
-    transport_stats = transport.stats();
+    m.resumed_at = evo.resumed() ? evo.start_generation() : -1;
+    m.records = evaluator.records;
+    m.transport_stats = transport.stats();
   }  // Shutdown to the worker ranks
-  const std::vector<MpiWorkerStats> workers = gather_worker_stats(MpiWorkerStats{});
+  m.workers = gather_worker_stats(MpiWorkerStats{});
   if (!folder.empty()) std::filesystem::remove_all(folder);
-  for (size_t g = 0; g < records.size() && g < reports.size(); ++g) records[g].timings = reports[g].timings;
+  for (size_t g = 0; g < m.records.size() && g < reports.size(); ++g) m.records[g].timings = reports[g].timings;
+  return m;
+}
 
-  // ---- measured
-  nlohmann::json j;
-  j["setup"] = {{"ranks", session.size()},
-                {"host", session.host()},
-                {"regime", regime_name(config.regime)},
-                {"population", config.neat.population},
-                {"generations", static_cast<int>(records.size())},
-                {"resumed_log", o.resume_log},
-                {"resumed_at_generation", resumed_at},
-                {"steps", config.eval.sim.steps},
-                {"seed", config.seed},
-                {"background_checkpoint", opts.background_checkpoint},
-                {"overlap_trajectory", opts.overlap_trajectory}};
-  std::printf("robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %zu generations "
-              "of up to %d steps, seed %lld",
-              session.size(), session.host().c_str(), session.size() - 1, regime_name(config.regime).c_str(),
-              config.neat.population, records.size(), config.eval.sim.steps, static_cast<long long>(config.seed));
-  if (resumed_at >= 0)
-    std::printf("; generations %d-%d of %s", resumed_at, resumed_at + static_cast<int>(records.size()) - 1,
-                o.resume_log.c_str());
-  std::printf("\n\n");
 
+/// Every job's time and message sizes as rank 0 saw them.
+struct JobFigures {
+  std::vector<double> all, sim, nosim, msg_out, msg_in;  // (s), (s), (s), (bytes), (bytes)
+  double simulated_share = 0.0;
+};
+
+/// Per-rank evaluation throughput.
+void report_ranks(const MpiSession& session, const MeasuredRun& m, nlohmann::json& j) {
+  const std::vector<MpiWorkerStats>& workers = m.workers;
+  const MpiTransportStats& transport_stats = m.transport_stats;
   std::printf("Per-rank evaluation throughput (time in the work function, on the worker rank)\n");
   std::printf("  rank  jobs  busy s  evals/s   rank 0 saw: s  overhead/job\n");
   nlohmann::json per_rank = nlohmann::json::array();
@@ -320,8 +327,16 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                         {"overhead_per_job_seconds", overhead}});
   }
   j["per_rank"] = per_rank;
+}
 
-  std::vector<double> all, sim, nosim, msg_out, msg_in;
+/// Job times, simulated or not.
+JobFigures report_jobs(const std::vector<GenerationRecord>& records, nlohmann::json& j) {
+  JobFigures f;
+  std::vector<double>& all = f.all;
+  std::vector<double>& sim = f.sim;
+  std::vector<double>& nosim = f.nosim;
+  std::vector<double>& msg_out = f.msg_out;
+  std::vector<double>& msg_in = f.msg_in;
   for (const auto& g : records)
     for (const auto& job : g.jobs) {
       all.push_back(job.seconds);
@@ -329,15 +344,15 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
       msg_out.push_back(job.bytes_out);
       msg_in.push_back(job.bytes_in);
     }
-  const double simulated_share = all.empty() ? 0.0 : static_cast<double>(sim.size()) / static_cast<double>(all.size());
+  f.simulated_share = all.empty() ? 0.0 : static_cast<double>(sim.size()) / static_cast<double>(all.size());
   std::printf("\nJob times as rank 0 saw them (hand-out to result), %zu jobs, %.0f%% simulated\n", all.size(),
-              100.0 * simulated_share);
+              100.0 * f.simulated_share);
   std::printf("  all: mean %.1f ms, median %.1f ms, 90%% %.1f ms, max %.1f ms\n", 1e3 * mean(all),
               1e3 * quantile(all, 0.5), 1e3 * quantile(all, 0.9), 1e3 * quantile(all, 1.0));
   std::printf("  simulated: %zu, mean %.1f ms, max %.1f ms; not simulated: %zu, mean %.2f ms\n", sim.size(),
               1e3 * mean(sim), 1e3 * quantile(sim, 1.0), nosim.size(), 1e3 * mean(nosim));
   j["jobs"] = {{"count", all.size()},
-               {"simulated_share", simulated_share},
+               {"simulated_share", f.simulated_share},
                {"mean_seconds", mean(all)},
                {"median_seconds", quantile(all, 0.5)},
                {"p90_seconds", quantile(all, 0.9)},
@@ -346,7 +361,21 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                {"not_simulated_mean_seconds", mean(nosim)},
                {"job_message_mean_bytes", mean(msg_out)},
                {"result_message_mean_bytes", mean(msg_in)}};
+  return f;
+}
 
+/// Rank 0's cost per generation, in means over the generations.
+struct RootFigures {
+  double serial = 0.0;       // serial part (s)
+  double cpu_per_job = 0.0;  // main-thread CPU while the workers evaluate (s per job)
+};
+
+/// Rank 0's cost per generation and the traffic.
+RootFigures report_root(const MeasuredRun& m, const JobFigures& jf, nlohmann::json& j) {
+  const std::vector<GenerationRecord>& records = m.records;
+  const MpiTransportStats& transport_stats = m.transport_stats;
+  const std::vector<double>& msg_out = jf.msg_out;
+  const std::vector<double>& msg_in = jf.msg_in;
   std::vector<double> total, wait, serial, messages, trajectory, breeding, checkpoint, cpu_per_job, msgs, bytes;
   double final_checkpoint = 0.0;  // the run's last generation's wait for its last checkpoint (once a run)
   for (const auto& g : records) {
@@ -392,16 +421,24 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
   j["per_generation_traffic"] = {{"messages", mean(msgs)},
                                  {"bytes", mean(bytes)},
                                  {"setup_bytes", transport_stats.setup_bytes}};
+  return RootFigures{mean(serial), mean(cpu_per_job)};
+}
 
-  // ---- projected
+/// The projection to other rank counts, as measured and for a late-run generation.
+void report_projection(const MpiSession& session, const Options& o, const MeasuredRun& m, const JobFigures& jf,
+                       const RootFigures& root, nlohmann::json& j) {
+  const std::vector<GenerationRecord>& records = m.records;
+  const RunConfig& config = m.config;
+  const std::vector<double>& sim = jf.sim;
+  const double simulated_share = jf.simulated_share;
   ClusterParams cluster;
   cluster.latency_s = o.latency_us * 1e-6;
   cluster.bandwidth_bytes_per_s = o.bandwidth_gbit * 1e9 / 8.0;
   cluster.core_speed = o.core_speed;
-  const double root_per_job = mean(cpu_per_job);
+  const double root_per_job = root.cpu_per_job;
   // Rank 0's serial part, without its champion re-simulation: that runs as often
   // as the champion's genes change, which the measured mean already reflects.
-  const double serial_mean = mean(serial);
+  const double serial_mean = root.serial;
   std::vector<GenerationCost> measured;
   for (const auto& g : records) {
     GenerationCost c;
@@ -489,6 +526,42 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                      {"paper_generations", o.paper_generations},
                      {"trial_ranks", o.trial_ranks},
                      {"rows", proj}};
+}
+
+int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
+  const MeasuredRun m = measure_run(session, app, o);
+  const RunConfig& config = m.config;
+  const std::vector<GenerationRecord>& records = m.records;
+  const int resumed_at = m.resumed_at;
+
+  // ---- measured
+  nlohmann::json j;
+  j["setup"] = {{"ranks", session.size()},
+                {"host", session.host()},
+                {"regime", regime_name(config.regime)},
+                {"population", config.neat.population},
+                {"generations", static_cast<int>(records.size())},
+                {"resumed_log", o.resume_log},
+                {"resumed_at_generation", resumed_at},
+                {"steps", config.eval.sim.steps},
+                {"seed", config.seed},
+                {"background_checkpoint", m.opts.background_checkpoint},
+                {"overlap_trajectory", m.opts.overlap_trajectory}};
+  std::printf("robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %zu generations "
+              "of up to %d steps, seed %lld",
+              session.size(), session.host().c_str(), session.size() - 1, regime_name(config.regime).c_str(),
+              config.neat.population, records.size(), config.eval.sim.steps, static_cast<long long>(config.seed));
+  if (resumed_at >= 0)
+    std::printf("; generations %d-%d of %s", resumed_at, resumed_at + static_cast<int>(records.size()) - 1,
+                o.resume_log.c_str());
+  std::printf("\n\n");
+
+  report_ranks(session, m, j);
+  const JobFigures jobs = report_jobs(records, j);
+  const RootFigures root = report_root(m, jobs, j);
+
+  // ---- projected
+  report_projection(session, o, m, jobs, root, j);
   if (!o.json_path.empty()) std::ofstream(o.json_path) << j.dump(2) << "\n";
   return 0;
 }

@@ -15,6 +15,7 @@ PACKAGES=(
   libgtest-dev gnuplot-nox
   openmpi-bin libopenmpi-dev
   iproute2 util-linux
+  libzstd-dev liblz4-dev graphviz nodejs npm   # robozoo-log export (MCAP) and cppn; the MCAP check's node
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizer runtimes (tools/fuzz.sh)
 )
 

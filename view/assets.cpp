@@ -27,6 +27,11 @@ constexpr Entry kEntries[] = {
     {"/chart.js", false, "chart.js", "text/javascript; charset=utf-8"},
     {"/strip.js", false, "strip.js", "text/javascript; charset=utf-8"},
     {"/playback.js", false, "playback.js", "text/javascript; charset=utf-8"},
+    {"/timeline.js", false, "timeline.js", "text/javascript; charset=utf-8"},
+    {"/cppn.js", false, "cppn.js", "text/javascript; charset=utf-8"},
+    {"/offline.js", false, "offline.js", "text/javascript; charset=utf-8"},
+    {"/experiment.html", false, "experiment.html", "text/html; charset=utf-8"},
+    {"/experiment.js", false, "experiment.js", "text/javascript; charset=utf-8"},
     // OrbitControls imports "../../../build/three.module.js": the same layout as the install.
     {"/three/build/three.module.js", true, "build/three.module.js", "text/javascript; charset=utf-8"},
     {"/three/examples/jsm/controls/OrbitControls.js", true, "examples/jsm/controls/OrbitControls.js",

@@ -9,10 +9,13 @@ namespace robozoo::view {
 
 namespace {
 
-double round_to(double v, double unit) { return std::isfinite(v) ? std::round(v / unit) * unit : 0.0; }
+// Divided by the integer scale rather than multiplied by the unit: the result is
+// the double nearest the decimal (0.2342, not 0.23420000000000002), which JSON
+// writes in the fewest digits.
+double round_to(double v, double per_unit) { return std::isfinite(v) ? std::round(v * per_unit) / per_unit : 0.0; }
 
-constexpr double kPositionUnit = 1e-4;  // m
-constexpr double kValueUnit = 1e-4;     // neuron and sensor values
+constexpr double kPositionUnit = 1e4;  // per m: 0.1 mm
+constexpr double kValueUnit = 1e4;     // per unit of neuron and sensor values: 1e-4
 
 nlohmann::json values(const std::vector<double>& v) {
   nlohmann::json a = nlohmann::json::array();
@@ -26,6 +29,21 @@ nlohmann::json flat_points(const Points& pts) {
   for (const auto& p : pts)
     for (int k = 0; k < 3; ++k) a.push_back(round_to(p[k], kPositionUnit));
   return a;
+}
+
+/// The CPPN as the page draws it: nodes with their drawing positions, links
+/// with their weights (disabled ones too, marked).
+nlohmann::json cppn_json(const cppn_genome_t& g) {
+  nlohmann::json nodes = nlohmann::json::array(), links = nlohmann::json::array();
+  for (const cppn_node_t& n : g.nodes)
+    nodes.push_back({{"id", n.id}, {"kind", n.kind}, {"act", n.activation}, {"pos", n.position}});
+  for (const link_t& l : g.links)
+    links.push_back({{"inn", l.innovation},
+                     {"from", l.from_node},
+                     {"to", l.to_node},
+                     {"w", round_to(l.weight, kValueUnit)},
+                     {"on", l.enabled != 0}});
+  return {{"nodes", nodes}, {"links", links}};
 }
 
 }  // namespace
@@ -83,9 +101,12 @@ nlohmann::json robot_json(const cppn_genome_t& g, const morphology_t& m, bool li
     for (int k = 0; k < 3; ++k) start.push_back(round_to(m.spheres[i].center[k], kPositionUnit));
   }
   for (int8_t t : m.sensor_type) types.push_back(t);
+  nlohmann::json sensor_sphere = nlohmann::json::array();
+  for (int32_t s : m.sensor_sphere) sensor_sphere.push_back(s);
   return {{"t", "robot"},   {"id", g.genome_id},       {"gen", g.generation},      {"fitness", g.fitness},
           {"radius", radius}, {"leaf", leaf},          {"start", start},           {"sensor_type", types},
-          {"neurons", m.num_neurons}, {"sensors", m.num_sensors}, {"live", live}, {"replay", replay}};
+          {"sensor_sphere", sensor_sphere}, {"neurons", m.num_neurons}, {"sensors", m.num_sensors},
+          {"live", live}, {"replay", replay}, {"cppn", cppn_json(g)}};
 }
 
 nlohmann::json pose_json(const pose_t& p) {

@@ -8,7 +8,10 @@
 //   champions  {"list": [{id, gen, fitness}...]}: the run's distinct champions so far
 //   champion   one more distinct champion {id, gen, fitness}
 //   robot      the robot now shown: id, gen, fitness, radius[], leaf[], start[] (x,y,z per sphere),
-//              sensor_type[], neurons, sensors, live (its poses are still coming), replay (asked for)
+//              sensor_type[], sensor_sphere[], neurons, sensors, live (its poses are still coming),
+//              replay (asked for), cppn {nodes: [{id, kind, act, pos}], links: [{inn, from, to, w, on}]}
+//              (the genome's nodes with kind, activation code and drawing position as in
+//              cppn_node_t; its links, disabled ones with on = false)
 //   pose       one sample: id, step, time (s), utime (us, when it was published), c[] (x,y,z per
 //              sphere), n[] neuron outputs, s[] sensor values
 //   poses      {"id", "list": [pose...], "done", "resimulated"}: many samples at once

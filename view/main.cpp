@@ -4,12 +4,18 @@
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
+#include <iomanip>
+#include <thread>
 #include <iostream>
+#include <regex>
 
 #include "evolve/core/version.hpp"
 #include "evolve/io/bus.hpp"
 #include "view/assets.hpp"
 #include "view/bus_feed.hpp"
+#include "view/experiment_watch.hpp"
+#include "view/export.hpp"
 #include "view/log_feed.hpp"
 #include "view/server.hpp"
 #include "view/view_state.hpp"
@@ -28,15 +34,75 @@ struct Args {
   BusFeedOptions bus;
   AssetDirs dirs;
   bool quiet = false;
+  ExportOptions export_options;
+  int64_t export_genome = -1;
+  std::string export_out;
+  std::string experiment;
+  ExperimentWatchOptions watch;
+  double poll_seconds = 2.0;
 };
+
+void fill_dirs(AssetDirs& dirs) {
+  const AssetDirs defaults = default_asset_dirs();
+  if (dirs.page.empty()) dirs.page = defaults.page;
+  if (dirs.three.empty()) dirs.three = defaults.three;
+}
+
+/// robozoo-view export LOG [--genome N] -o OUT.html
+int run_export(CLI::App& sub, Args& a) {
+  fill_dirs(a.dirs);
+  if (sub.count("--genome")) a.export_options.genome = a.export_genome;
+  const nlohmann::json frames = champion_frames(a.export_options);
+  const std::string html = offline_page(a.dirs, frames);
+  write_whole_file(a.export_out, html);
+  const nlohmann::json& robot = frames[4];
+  std::cerr << "robozoo-view: wrote " << a.export_out << ": genome " << robot["id"] << " (generation " << robot["gen"]
+            << ", " << robot["radius"].size() << " spheres, " << frames[5]["list"].size() << " samples), "
+            << std::fixed << std::setprecision(2) << html.size() / 1e6 << " MB\n";
+  return 0;
+}
+
+/// GET /export?genome=N in log mode: the one-file replay as a download.
+Route export_route(const std::string& log, const AssetDirs& dirs) {
+  return [log, dirs](const std::string& target) -> std::optional<HttpReply> {
+    static const std::regex re(R"(/export(\?genome=(-?[0-9]{1,18}))?)");
+    std::smatch m;
+    if (!std::regex_match(target, m, re)) return std::nullopt;
+    if (log.empty()) return HttpReply{409, "text/plain; charset=utf-8", "export needs a log: robozoo-view LOG\n", ""};
+    ExportOptions o;
+    o.log = log;
+    o.allow_truncated = true;  // --follow: the log may end inside its newest event
+    if (m[2].matched) o.genome = std::stoll(m[2].str());
+    try {
+      const nlohmann::json frames = champion_frames(o);
+      return HttpReply{200, "text/html; charset=utf-8", offline_page(dirs, frames),
+                       "champion-" + frames[4]["id"].dump() + ".html"};
+    } catch (const std::exception& e) {
+      return HttpReply{404, "text/plain; charset=utf-8", std::string(e.what()) + "\n", ""};
+    }
+  };
+}
 
 std::string address_text(const std::string& bind, unsigned short port) {
   const std::string host = bind.find(':') != std::string::npos ? "[" + bind + "]" : bind == "0.0.0.0" ? "127.0.0.1" : bind;
   return "http://" + host + ":" + std::to_string(port) + "/";
 }
 
+int run_experiment(Args& a);
+
 int run(CLI::App& app, Args& a) {
   const bool live = app.count("--lcm-url") > 0;
+  if (!a.experiment.empty()) {
+    if (live || !a.log.path.empty()) {
+      std::cerr << "robozoo-view: give one of --lcm-url [URL], a LOG or --experiment DIR\n";
+      return 2;
+    }
+    return run_experiment(a);
+  }
+  if (app.count("--poll") || app.count("--running-seconds")) {
+    std::cerr << "robozoo-view: --poll and --running-seconds are for --experiment\n";
+    return 2;
+  }
   if (live == !a.log.path.empty()) {
     std::cerr << "robozoo-view: give either --lcm-url [URL] or a LOG\n" << app.help();
     return 2;
@@ -55,9 +121,8 @@ int run(CLI::App& app, Args& a) {
     return 2;
   }
   if (live) a.bus.url = a.lcm_url.empty() ? kDefaultLcmUrl : a.lcm_url;
-  const AssetDirs defaults = default_asset_dirs();
-  if (a.dirs.page.empty()) a.dirs.page = defaults.page;
-  if (a.dirs.three.empty()) a.dirs.three = defaults.three;
+  fill_dirs(a.dirs);
+  a.server.route = export_route(live ? "" : a.log.path, a.dirs);
 
   // SIGINT and SIGTERM end the loop cleanly: blocked here, before any thread
   // starts, and polled by the loop (no handler, no global flag).
@@ -84,6 +149,53 @@ int run(CLI::App& app, Args& a) {
   return 0;
 }
 
+/// --experiment: /experiment.json (the summary) and /trial?name=T (that
+/// trial's newest champion as a one-file replay, shown in the browser).
+Route experiment_route(const ExperimentWatch& watch, const AssetDirs& dirs) {
+  return [&watch, dirs](const std::string& target) -> std::optional<HttpReply> {
+    if (target == "/experiment.json") return HttpReply{200, "application/json", watch.summary(), ""};
+    static const std::regex re(R"(/trial\?name=([a-z-]+-s[0-9]{1,18}))");
+    std::smatch m;
+    if (!std::regex_match(target, m, re)) return std::nullopt;
+    const std::string log = watch.log_of(m[1].str());
+    if (log.empty()) return HttpReply{404, "text/plain; charset=utf-8", "no trial " + m[1].str() + "\n", ""};
+    ExportOptions o;
+    o.log = log;
+    o.allow_truncated = true;  // it may be growing
+    try {
+      return HttpReply{200, "text/html; charset=utf-8", offline_page(dirs, champion_frames(o)), ""};
+    } catch (const std::exception& e) {
+      return HttpReply{404, "text/plain; charset=utf-8", std::string(e.what()) + "\n", ""};
+    }
+  };
+}
+
+/// robozoo-view --experiment DIR: the experiment page, the folder polled.
+int run_experiment(Args& a) {
+  if (!(a.poll_seconds > 0)) throw std::invalid_argument("--poll must be a positive number of seconds");
+  fill_dirs(a.dirs);
+  const std::function<bool()> should_stop = poll_interrupts();
+  ExperimentWatch watch(a.experiment, a.watch);  // throws when there is no experiment
+  const AssetTable assets = AssetTable::load(a.dirs);
+  ViewState state("experiment", a.experiment, a.state);
+  a.server.route = experiment_route(watch, a.dirs);
+  Server server(a.server, assets, state);
+  server.start();
+  std::cerr << "robozoo-view: open " << address_text(a.server.bind, server.port()) << "experiment.html ("
+            << watch.trials().size() << " trials in " << a.experiment << ")" << std::endl;
+  auto next = std::chrono::steady_clock::now();
+  while (!should_stop()) {
+    if (std::chrono::steady_clock::now() >= next) {
+      watch.poll();
+      next = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<int64_t>(a.poll_seconds * 1000));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  server.stop();
+  std::cerr << "robozoo-view: " << watch.trials().size() << " trials, " << server.refused() << " requests refused\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -91,6 +203,8 @@ int main(int argc, char** argv) {
       "robozoo-view: watch a robozoo run in the browser, live from the bus or played from a log.\n"
       "  robozoo-view --lcm-url [URL]                 follow a live run (robozoo-evolve --lcm-url)\n"
       "  robozoo-view LOG [--speed S] [--loop | --follow] [--generation G]   play a log\n"
+      "  robozoo-view --experiment DIR                an experiment's trials as they run\n"
+      "  robozoo-view export LOG [--genome N] -o champion.html   one champion as one offline HTML file\n"
       "then open the address it prints (http://127.0.0.1:8080/ by default)."};
   app.set_version_flag("--version", robozoo::version_line());
   Args a;
@@ -124,9 +238,25 @@ int main(int argc, char** argv) {
   app.add_option("--page-dir", a.dirs.page, "folder of the page's files (default: ../share/robozoo/view beside the "
                                             "program)");
   app.add_option("--three-dir", a.dirs.three, "three.js's folder (default: " ROBOZOO_THREE_DIR ")");
+  app.add_option("--experiment", a.experiment, "follow an experiment folder (robozoo-experiment --out): every "
+                                               "trial's fitness, the arms' means and their differences");
+  app.add_option("--poll", a.poll_seconds, "--experiment: look at the folder this often (s)")->capture_default_str();
+  app.add_option("--running-seconds", a.watch.running_seconds,
+                 "--experiment: a trial whose log changed this recently is running (s)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_flag("-q,--quiet", a.quiet, "only the address and the final summary");
+  CLI::App* exp = app.add_subcommand("export", "write one champion of a LOG as one self-contained HTML file that "
+                                               "plays it offline (no server, no network)");
+  exp->add_option("LOG", a.export_options.log, "a log written by robozoo-evolve")->required();
+  exp->add_option("--genome", a.export_genome, "the genome to export (default: the log's last champion)");
+  exp->add_option("-o,--output", a.export_out, "the HTML file to write")->required();
+  exp->add_option("--page-dir", a.dirs.page, "folder of the page's files");
+  exp->add_option("--three-dir", a.dirs.three, "three.js's folder");
+  app.require_subcommand(0, 1);
   CLI11_PARSE(app, argc, argv);
   try {
+    if (exp->parsed()) return run_export(*exp, a);
     return run(app, a);
   } catch (const std::exception& e) {
     std::cerr << "robozoo-view: " << e.what() << "\n";

@@ -266,8 +266,11 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     if (req.method() != http::verb::get && req.method() != http::verb::head)
       return respond(req, http::status::method_not_allowed, "text/plain", "only GET and HEAD\n");
     const Asset* a = shared_.assets.find(std::string(req.target()));
-    if (!a) return respond(req, http::status::not_found, "text/plain", "not found\n");
-    respond(req, http::status::ok, a->content_type, a->body);
+    if (a) return respond(req, http::status::ok, a->content_type, a->body);
+    std::optional<HttpReply> r;
+    if (shared_.options.route) r = shared_.options.route(std::string(req.target()));
+    if (!r) return respond(req, http::status::not_found, "text/plain", "not found\n");
+    respond(req, static_cast<http::status>(r->status), r->content_type, r->body, r->download);
   }
 
   /// A page from another site must not open the socket (cross-site WebSocket
@@ -280,10 +283,11 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   }
 
   void respond(const http::request<http::string_body>& req, http::status status, const std::string& type,
-               const std::string& body) {
+               const std::string& body, const std::string& download = "") {
     auto res = std::make_shared<http::response<http::string_body>>(status, req.version());
     res->set(http::field::server, "robozoo-view");
     res->set(http::field::content_type, type);
+    if (!download.empty()) res->set(http::field::content_disposition, "attachment; filename=\"" + download + "\"");
     res->set(http::field::cache_control, "no-cache");
     res->set("X-Content-Type-Options", "nosniff");
     res->keep_alive(req.keep_alive() && status == http::status::ok);

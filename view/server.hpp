@@ -6,13 +6,27 @@
 // max_client_frame) closes its connection. Re-simulations for replays run on a
 // worker thread of their own, so neither the bus nor the pages wait for them.
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "view/assets.hpp"
 #include "view/view_state.hpp"
 
 namespace robozoo::view {
+
+/// The answer to a request for a path the program serves itself (not a file).
+struct HttpReply {
+  int status = 200;          ///< HTTP status
+  std::string content_type;
+  std::string body;
+  std::string download;      ///< when set, a file to save under this name (Content-Disposition)
+};
+
+/// Answers a GET target that is not a file of the table ("/export?genome=3");
+/// nullopt: 404. Called on the network thread.
+using Route = std::function<std::optional<HttpReply>(const std::string& target)>;
 
 struct ServerOptions {
   std::string bind = "127.0.0.1";    ///< address to listen on (loopback unless asked)
@@ -22,6 +36,7 @@ struct ServerOptions {
                                      ///< stays in its ClientQueue, where old poses can be dropped
   double stats_interval = 1.0;       ///< a "stats" frame to each page this often (s)
   size_t max_pending_replays = 4;    ///< re-simulations waiting at once, more are refused (count)
+  Route route;                       ///< paths the program answers itself (none when empty)
 };
 
 class Server {

@@ -31,6 +31,41 @@ std::string human_time(double s) {
   return buf;
 }
 
+/// A generation's results in figures: the fields of its summary that come from the results alone,
+/// its champion and how many robots were simulated.
+struct ResultFigures {
+  GenerationSummary summary;
+  size_t champion = 0;  ///< index of the best genome (the first of equals)
+  int simulated = 0;    ///< genomes whose robots went to the simulator (count)
+};
+
+/// Throws std::logic_error when the results are not the genomes' in order.
+ResultFigures summarize_results(const std::vector<EvalSummary>& results, const std::vector<Genome>& genomes,
+                                int32_t gen) {
+  ResultFigures f;
+  GenerationSummary& s = f.summary;
+  s.generation = gen;
+  size_t champ = 0;
+  double sum = 0.0;
+  for (size_t i = 0; i < results.size(); ++i) {
+    if (results[i].genome_id != genomes[i].id)
+      throw std::logic_error("evaluator returned results out of order");
+    sum += results[i].fitness;
+    if (results[i].fitness > results[champ].fitness) champ = i;
+    ++s.outcome_counts[static_cast<int>(results[i].outcome)];
+    f.simulated += results[i].outcome != Outcome::NotSimulated;
+  }
+  const double n = static_cast<double>(results.size());
+  s.mean_fitness = sum / n;
+  double ss = 0.0;
+  for (const auto& r : results) ss += (r.fitness - s.mean_fitness) * (r.fitness - s.mean_fitness);
+  s.stderr_fitness = results.size() > 1 ? std::sqrt(ss / (n - 1.0)) / std::sqrt(n) : 0.0;
+  s.best_fitness = results[champ].fitness;
+  s.champion_id = genomes[champ].id;
+  f.champion = champ;
+  return f;
+}
+
 bool file_exists(const std::string& p) {
   struct stat st {};
   return ::stat(p.c_str(), &st) == 0;
@@ -232,18 +267,7 @@ std::vector<pose_t> Evolution::champion_trajectory(const Genome& champion, const
   return std::move(t.poses);
 }
 
-bool Evolution::step(const std::function<void(const ProgressReport&)>& on_generation) {
-  if (finished_) return false;
-  // Everything of the generation is computed first (evaluation, the published
-  // robots, a new champion's trajectory, breeding), so that generation_t's
-  // generation_seconds covers all of it; then its messages are written in
-  // their usual order (generation, genome, morphology, poses) and the
-  // checkpoint saved.
-  const auto t0 = std::chrono::steady_clock::now();
-  const int32_t gen = population_->generation();
-  const std::vector<Genome> genomes = population_->genomes();  // advance() replaces them
-
-  StepTimings timing;
+std::vector<EvalSummary> Evolution::evaluate_generation(const std::vector<Genome>& genomes, StepTimings& timing) {
   auto tm = std::chrono::steady_clock::now();
   const auto emit_run = [&] {
     tm = std::chrono::steady_clock::now();
@@ -256,9 +280,8 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   if (!overlapped) emit_run();
 
   const auto te = std::chrono::steady_clock::now();
-  const std::vector<EvalSummary> results = evaluator_.evaluate(genomes);
-  const double eval_seconds = seconds_since(te);
-  timing.evaluate = eval_seconds;
+  std::vector<EvalSummary> results = evaluator_.evaluate(genomes);
+  timing.evaluate = seconds_since(te);
   if (overlapped) {
     timing.trajectory += finish_trajectory();
     emit_run();
@@ -266,112 +289,73 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   if (results.size() != genomes.size())
     throw std::logic_error("evaluator returned " + std::to_string(results.size()) + " results for " +
                            std::to_string(genomes.size()) + " genomes");
+  return results;
+}
 
-  GenerationSummary s;
-  s.generation = gen;
-  size_t champ = 0;
-  double sum = 0.0;
-  int simulated = 0;
-  for (size_t i = 0; i < results.size(); ++i) {
-    if (results[i].genome_id != genomes[i].id)
-      throw std::logic_error("evaluator returned results out of order");
-    sum += results[i].fitness;
-    if (results[i].fitness > results[champ].fitness) champ = i;
-    ++s.outcome_counts[static_cast<int>(results[i].outcome)];
-    simulated += results[i].outcome != Outcome::NotSimulated;
-  }
-  const double n = static_cast<double>(results.size());
-  s.mean_fitness = sum / n;
-  double ss = 0.0;
-  for (const auto& r : results) ss += (r.fitness - s.mean_fitness) * (r.fitness - s.mean_fitness);
-  s.stderr_fitness = results.size() > 1 ? std::sqrt(ss / (n - 1.0)) / std::sqrt(n) : 0.0;
-  s.best_fitness = results[champ].fitness;
-  best_so_far_ = gen == 0 ? s.best_fitness : std::max(best_so_far_, s.best_fitness);
-  s.best_so_far_fitness = best_so_far_;
-  evaluations_ += static_cast<int64_t>(results.size());
-  s.evaluations = evaluations_;
-  s.champion_id = genomes[champ].id;
-  s.num_species = static_cast<int32_t>(population_->species().size());
-  // The threshold this generation was speciated with (advance() moves it on).
-  s.compatibility_threshold = population_->speciation_threshold();
-  s.eval_seconds = eval_seconds;
-
-  // The published genomes with their species and robots.
-  tm = std::chrono::steady_clock::now();
-  std::vector<size_t> published{champ};
+Evolution::Published Evolution::grow_published(const std::vector<Genome>& genomes, size_t champ) const {
+  Published p;
+  p.index.push_back(champ);
   if (config_.publish_all)
     for (size_t i = 0; i < genomes.size(); ++i)
-      if (i != champ) published.push_back(i);
-  std::vector<int32_t> species_ids;
-  std::vector<Robot> robots;
-  for (size_t i : published) {
-    species_ids.push_back(population_->species_of(i));
-    robots.push_back(grow_genome(genomes[i], config_.eval));
+      if (i != champ) p.index.push_back(i);
+  for (size_t i : p.index) {
+    p.species_ids.push_back(population_->species_of(i));
+    p.robots.push_back(grow_genome(genomes[i], config_.eval));
   }
-  timing.messages += seconds_since(tm);
+  return p;
+}
 
+std::vector<pose_t> Evolution::new_champion_poses(const Genome& champion, const Robot& robot, int32_t gen,
+                                                  const EvalSummary& result, bool last) {
   // The champion "changes" when its logged genes do (trajectory_key).
-  const Genome& champion = genomes[champ];
   const uint64_t champion_hash = trajectory_key(champion);
-  tm = std::chrono::steady_clock::now();
   std::vector<pose_t> poses;
-  const bool last = gen + 1 >= config_.generations;
-  if (champion_hash != last_champion_hash_ && results[champ].outcome != Outcome::NotSimulated) {
+  if (champion_hash != last_champion_hash_ && result.outcome != Outcome::NotSimulated) {
     if (options_.overlap_trajectory && !last) {
       // On a thread of its own, while the next generation is evaluated.
-      pending_poses_ = std::async(std::launch::async, [this, c = champion, r = robots.front(), gen,
-                                                       e = results[champ]] { return champion_trajectory(c, r, gen, e); });
+      pending_poses_ = std::async(std::launch::async, [this, c = champion, r = robot, gen, e = result] {
+        return champion_trajectory(c, r, gen, e);
+      });
     } else {
-      poses = champion_trajectory(champion, robots.front(), gen, results[champ]);  // published[0] is the champion
+      poses = champion_trajectory(champion, robot, gen, result);
     }
   }
   last_champion_hash_ = champion_hash;
-  timing.trajectory += seconds_since(tm);
+  return poses;
+}
 
-  std::vector<double> fitness(results.size());
-  for (size_t i = 0; i < results.size(); ++i) fitness[i] = results[i].fitness;
-  tm = std::chrono::steady_clock::now();
-  if (last) {
-    finished_ = true;
-  } else {
-    population_->advance(fitness, rng_);
-  }
-  timing.breeding = seconds_since(tm);
-
-  tm = std::chrono::steady_clock::now();
-  s.generation_seconds = seconds_since(t0);
+void Evolution::emit_generation(const GenerationSummary& s, const std::vector<Genome>& genomes,
+                                const std::vector<EvalSummary>& results, const Published& published) {
   emit_message(kChannelGeneration, make_generation_message(run_id_, s, 0));
-  for (size_t k = 0; k < published.size(); ++k) {
-    const size_t i = published[k];
+  for (size_t k = 0; k < published.index.size(); ++k) {
+    const size_t i = published.index[k];
     const EvalSummary& r = results[i];
-    emit_message(kChannelGenome, make_genome_message(run_id_, gen, genomes[i], species_ids[k],
+    emit_message(kChannelGenome, make_genome_message(run_id_, s.generation, genomes[i], published.species_ids[k],
                                                      GenomeScore{r.fitness, r.r, r.d, r.outcome}, 0));
-    emit_message(kChannelMorphology, make_morphology_message(run_id_, gen, genomes[i].id, robots[k], 0));
+    emit_message(kChannelMorphology,
+                 make_morphology_message(run_id_, s.generation, genomes[i].id, published.robots[k], 0));
   }
-  timing.messages += seconds_since(tm);
-  tm = std::chrono::steady_clock::now();
-  emit_poses(poses);
-  timing.trajectory += seconds_since(tm);
-  if (bus_) {
-    // How publishing went, on the bus only (the log is the record).
-    bus_status_t b{};
-    b.run_id = run_id_;
-    b.generation = gen;
-    b.messages_published = messages_published();
-    b.bytes_published = bus_->bytes() - bus_status_bytes_;
-    b.publish_failures = bus_->failures();
-    b.utime = pacer_.schedule(now_us(), static_cast<size_t>(b.getEncodedSize()));  // it takes its turn too
-    const std::vector<uint8_t> bytes = encode_message(b);
-    if (bus_->publish(kChannelBus, bytes, b.utime)) {
-      ++bus_statuses_;
-      bus_status_bytes_ += static_cast<int64_t>(bytes.size());
-    }
-  }
+}
 
-  ProgressReport report;
-  report.summary = s;
-  elapsed_ += seconds_since(t0);
-  tm = std::chrono::steady_clock::now();
+void Evolution::publish_bus_status(int32_t gen) {
+  if (!bus_) return;
+  // How publishing went, on the bus only (the log is the record).
+  bus_status_t b{};
+  b.run_id = run_id_;
+  b.generation = gen;
+  b.messages_published = messages_published();
+  b.bytes_published = bus_->bytes() - bus_status_bytes_;
+  b.publish_failures = bus_->failures();
+  b.utime = pacer_.schedule(now_us(), static_cast<size_t>(b.getEncodedSize()));  // it takes its turn too
+  const std::vector<uint8_t> bytes = encode_message(b);
+  if (bus_->publish(kChannelBus, bytes, b.utime)) {
+    ++bus_statuses_;
+    bus_status_bytes_ += static_cast<int64_t>(bytes.size());
+  }
+}
+
+void Evolution::checkpoint_step(StepTimings& timing) {
+  auto tm = std::chrono::steady_clock::now();
   // A generation whose poses are still to come is checkpointed once they are
   // in the log (finish_trajectory, in the next step or wait_for_checkpoint);
   // meanwhile the previous generation's is the last one whole.
@@ -387,6 +371,70 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
     checkpoint_writer_->wait();  // a finished run's last checkpoint is on disk
     timing.final_checkpoint = seconds_since(tm);
   }
+}
+
+bool Evolution::step(const std::function<void(const ProgressReport&)>& on_generation) {
+  if (finished_) return false;
+  // Everything of the generation is computed first (evaluation, the published
+  // robots, a new champion's trajectory, breeding), so that generation_t's
+  // generation_seconds covers all of it; then its messages are written in
+  // their usual order (generation, genome, morphology, poses) and the
+  // checkpoint saved.
+  const auto t0 = std::chrono::steady_clock::now();
+  const int32_t gen = population_->generation();
+  const std::vector<Genome> genomes = population_->genomes();  // advance() replaces them
+
+  StepTimings timing;
+  const std::vector<EvalSummary> results = evaluate_generation(genomes, timing);
+  const double eval_seconds = timing.evaluate;
+
+  ResultFigures figures = summarize_results(results, genomes, gen);
+  GenerationSummary& s = figures.summary;
+  const size_t champ = figures.champion;
+  const double n = static_cast<double>(results.size());
+  best_so_far_ = gen == 0 ? s.best_fitness : std::max(best_so_far_, s.best_fitness);
+  s.best_so_far_fitness = best_so_far_;
+  evaluations_ += static_cast<int64_t>(results.size());
+  s.evaluations = evaluations_;
+  s.num_species = static_cast<int32_t>(population_->species().size());
+  // The threshold this generation was speciated with (advance() moves it on).
+  s.compatibility_threshold = population_->speciation_threshold();
+  s.eval_seconds = eval_seconds;
+
+  // The published genomes with their species and robots.
+  auto tm = std::chrono::steady_clock::now();
+  const Published published = grow_published(genomes, champ);
+  timing.messages += seconds_since(tm);
+
+  tm = std::chrono::steady_clock::now();
+  const bool last = gen + 1 >= config_.generations;
+  // published.robots[0] is the champion's.
+  std::vector<pose_t> poses = new_champion_poses(genomes[champ], published.robots.front(), gen, results[champ], last);
+  timing.trajectory += seconds_since(tm);
+
+  std::vector<double> fitness(results.size());
+  for (size_t i = 0; i < results.size(); ++i) fitness[i] = results[i].fitness;
+  tm = std::chrono::steady_clock::now();
+  if (last) {
+    finished_ = true;
+  } else {
+    population_->advance(fitness, rng_);
+  }
+  timing.breeding = seconds_since(tm);
+
+  tm = std::chrono::steady_clock::now();
+  s.generation_seconds = seconds_since(t0);
+  emit_generation(s, genomes, results, published);
+  timing.messages += seconds_since(tm);
+  tm = std::chrono::steady_clock::now();
+  emit_poses(poses);
+  timing.trajectory += seconds_since(tm);
+  publish_bus_status(gen);
+
+  ProgressReport report;
+  report.summary = s;
+  elapsed_ += seconds_since(t0);
+  checkpoint_step(timing);
   timing.total = seconds_since(t0);
   report.timings = timing;
 
@@ -395,7 +443,7 @@ bool Evolution::step(const std::function<void(const ProgressReport&)>& on_genera
   report.evals_per_second = eval_seconds > 0 ? n / eval_seconds : 0.0;
   const int done = gen + 1;
   report.remaining_seconds = report.elapsed_seconds / done * (config_.generations - done);
-  report.simulated_share = simulated / n;
+  report.simulated_share = figures.simulated / n;
   report.messages_published = messages_published();
   report.publish_failures = publish_failures();
   if (on_generation) on_generation(report);

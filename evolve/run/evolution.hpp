@@ -152,6 +152,31 @@ class Evolution {
   std::vector<pose_t> champion_trajectory(const Genome& champion, const Robot& robot, int32_t generation,
                                           const EvalSummary& expected) const;
 
+  // The steps of step(), in order.
+  /// The published genomes of a generation (the champion first; all with publish_all), with their
+  /// species ids and grown robots.
+  struct Published {
+    std::vector<size_t> index;
+    std::vector<int32_t> species_ids;
+    std::vector<Robot> robots;
+  };
+  /// Logs the run message and evaluates the genomes (timing.evaluate); with the previous
+  /// generation's champion still simulating, its poses go first. One result per genome.
+  std::vector<EvalSummary> evaluate_generation(const std::vector<Genome>& genomes, StepTimings& timing);
+  Published grow_published(const std::vector<Genome>& genomes, size_t champ) const;
+  /// A champion whose genes changed: its trajectory's poses now, or (overlap_trajectory, not the
+  /// last generation) started on a thread for finish_trajectory; empty otherwise.
+  std::vector<pose_t> new_champion_poses(const Genome& champion, const Robot& robot, int32_t gen,
+                                         const EvalSummary& result, bool last);
+  /// The generation, genome and morphology messages.
+  void emit_generation(const GenerationSummary& s, const std::vector<Genome>& genomes,
+                       const std::vector<EvalSummary>& results, const Published& published);
+  /// ROBOZOO_BUS: how publishing went (bus only).
+  void publish_bus_status(int32_t gen);
+  /// The generation's checkpoint (or the held one while its poses simulate); a finished run's is
+  /// waited for.
+  void checkpoint_step(StepTimings& timing);
+
   RunConfig config_;
   EvolveOptions options_;
   Evaluator& evaluator_;

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "render/png_io.hpp"
+#include "render/gl/png_io.hpp"
 #include "tests/render/decode_video.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/render/messages.hpp"

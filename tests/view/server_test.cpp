@@ -87,6 +87,33 @@ struct Page {
   }
 };
 
+TEST(ViewServer, RouteAnswersWhatIsNoFileAndOnlyThat) {
+  AssetTable assets = AssetTable::load(test_dirs());
+  ViewState state{"log", "test"};
+  ServerOptions o = Fixture::options();
+  std::vector<std::string> asked;
+  o.route = [&asked](const std::string& target) -> std::optional<HttpReply> {
+    asked.push_back(target);
+    if (target == "/export?genome=7") return HttpReply{200, "text/html; charset=utf-8", "<p>seven</p>", "champion-7.html"};
+    if (target == "/export?genome=8") return HttpReply{404, "text/plain", "no genome 8\n", ""};
+    return std::nullopt;
+  };
+  Server server(o, assets, state);
+  server.start();
+  const auto ok = get(server.port(), "/export?genome=7");
+  EXPECT_EQ(ok.result_int(), 200);
+  EXPECT_EQ(ok.body(), "<p>seven</p>");
+  EXPECT_EQ(ok[http::field::content_disposition], "attachment; filename=\"champion-7.html\"");
+  const auto missing = get(server.port(), "/export?genome=8");
+  EXPECT_EQ(missing.result_int(), 404);
+  EXPECT_EQ(missing.body(), "no genome 8\n");
+  EXPECT_EQ(missing[http::field::content_disposition], "");
+  EXPECT_EQ(get(server.port(), "/elsewhere").result_int(), 404);
+  EXPECT_EQ(get(server.port(), "/view.js").result_int(), 200);  // files first: the route is not asked
+  server.stop();
+  EXPECT_EQ(asked, (std::vector<std::string>{"/export?genome=7", "/export?genome=8", "/elsewhere"}));
+}
+
 TEST(ViewServer, ServesTheFixedFilesOnly) {
   Fixture f;
   const unsigned short port = f.server.port();
@@ -95,6 +122,12 @@ TEST(ViewServer, ServesTheFixedFilesOnly) {
   EXPECT_NE(index.body().find("robozoo-view"), std::string::npos);
   EXPECT_EQ(index[http::field::content_type], "text/html; charset=utf-8");
   EXPECT_EQ(get(port, "/view.js?v=1").result(), http::status::ok);
+  // Every module view.js imports is served.
+  for (const std::string js : {"/scene.js", "/chart.js", "/strip.js", "/playback.js", "/timeline.js", "/cppn.js"}) {
+    auto r = get(port, js);
+    EXPECT_EQ(r.result(), http::status::ok) << js;
+    EXPECT_EQ(r[http::field::content_type], "text/javascript; charset=utf-8") << js;
+  }
   auto three = get(port, "/three/build/three.module.js");
   EXPECT_EQ(three.result(), http::status::ok);
   EXPECT_NE(three.body().find("REVISION"), std::string::npos);

@@ -21,7 +21,7 @@
 #include <thread>
 
 #include "evolve/io/event_log.hpp"
-#include "render/png_io.hpp"
+#include "render/gl/png_io.hpp"
 #include "runlog/log_source.hpp"
 #include "runlog/trajectory.hpp"
 #include "tests/render/fixtures.hpp"

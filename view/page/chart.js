@@ -1,13 +1,18 @@
 // The fitness chart: best, mean and best-so-far fitness per generation (left
-// axis) and the species count (bars, right axis), one point per generation.
+// axis) and the species count (bars, right axis), one point per generation;
+// a cursor marks the generation of the robot shown.
 export class Chart {
   constructor(canvas) {
     this.canvas = canvas;
     this.gens = [];
+    this.cursor = null;     // generation of the robot shown
+    this.cursorX = null;    // where its cursor was drawn (CSS px), for tests
     window.addEventListener("resize", () => this.draw());
   }
 
   clear() { this.gens = []; this.draw(); }
+  /// Marks generation g (null: none).
+  setCursor(g) { if (g !== this.cursor) { this.cursor = g; this.draw(); } }
   /// Number of generations on the chart.
   count() { return this.gens.length; }
 
@@ -26,6 +31,7 @@ export class Chart {
     const ctx = c.getContext("2d", { willReadFrequently: true });  // on the CPU, as the strip's (strip.js)
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, w, h);
+    this.cursorX = null;
     const L = 44, R = 30, T = 6, B = 18;
     const gs = this.gens;
     ctx.font = "10px DejaVu Sans, sans-serif";
@@ -55,6 +61,13 @@ export class Chart {
       ctx.stroke();
       if (gs.length === 1) { ctx.fillStyle = colour; ctx.fillRect(X(gs[0].g) - 2, Y(gs[0][key]) - 2, 4, 4); }
     };
+    if (this.cursor !== null && this.cursor >= g0 && this.cursor <= g1) {
+      const x = X(this.cursor);
+      this.cursorX = x;
+      ctx.strokeStyle = "#e00"; ctx.lineWidth = 2; ctx.setLineDash([4, 3]);
+      ctx.beginPath(); ctx.moveTo(x, T); ctx.lineTo(x, h - B); ctx.stroke();
+      ctx.setLineDash([]);
+    }
     line("mean", "#888", 1.5);
     line("best", "#c0392b", 1.5);
     line("bsf", "#111", 2);

@@ -1,7 +1,7 @@
 // The 3D view: the robot as lit spheres (leaves red, the others blue, as on
 // robozoo-render's zoo sheets), a ground with a grid every 0.5 m, the target
 // marked by a ring and a pole, a camera that follows the robot and orbit
-// controls (drag, wheel, arrow keys) to look around. World z is up.
+// controls (drag, wheel) to look around. World z is up.
 import * as THREE from "three";
 import { OrbitControls } from "/three/examples/jsm/controls/OrbitControls.js";
 
@@ -130,7 +130,7 @@ export class Scene {
     this.camera.position.set(-1.0, -4.5, 2.0);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.target.set(0, 0, 0.3);
-    this.controls.enableKeys = true;
+    this.controls.enableKeys = false;  // the arrow keys step the timeline
     this.controls.update();
 
     // The lights, for the spheres' shader (world z up): a sky and a ground
@@ -219,8 +219,9 @@ export class Scene {
     this.place(start, start, 0);
   }
 
-  /// Sphere centres (flat x,y,z per sphere), a + (b - a) * f.
-  place(a, b, f) {
+  /// Sphere centres (flat x,y,z per sphere), a + (b - a) * f. snap: the
+  /// camera jumps onto the robot instead of following it (paused: still frames).
+  place(a, b, f, snap = false) {
     const n = this.radius.length;
     if (a.length !== 3 * n || b.length !== 3 * n) return;
     let cx = 0, cy = 0, cz = 0, mass = 0;
@@ -234,6 +235,7 @@ export class Scene {
       cx += w * x; cy += w * y; cz += w * z; mass += w;
     }
     centers.needsUpdate = true;
+    if (snap) this.focus = null;
     if (mass > 0) this.follow(cx / mass, cy / mass, cz / mass);
   }
 

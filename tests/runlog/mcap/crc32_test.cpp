@@ -1,0 +1,36 @@
+#include "runlog/mcap/crc32.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace robozoo::mcap {
+namespace {
+
+TEST(Crc32, CheckValueOfTheStandardString) {
+  // The catalogue check value of CRC-32/ISO-HDLC (zlib's crc32, MCAP's).
+  const std::string s = "123456789";
+  EXPECT_EQ(crc32_update(0, s.data(), s.size()), 0xCBF43926u);
+}
+
+TEST(Crc32, EmptyInputKeepsTheCrc) {
+  EXPECT_EQ(crc32_update(0, "", 0), 0u);
+  EXPECT_EQ(crc32_update(0x1234u, "", 0), 0x1234u);
+}
+
+TEST(Crc32, SingleByteByHand) {
+  // CRC-32 of the one byte 'a' (0x61): 0xE8B7BE43.
+  EXPECT_EQ(crc32_update(0, "a", 1), 0xE8B7BE43u);
+}
+
+TEST(Crc32, IncrementalEqualsWhole) {
+  const std::string s = "the quick brown fox jumps over the lazy dog";
+  const uint32_t whole = crc32_update(0, s.data(), s.size());
+  for (size_t cut = 0; cut <= s.size(); cut += 7) {
+    const uint32_t first = crc32_update(0, s.data(), cut);
+    EXPECT_EQ(crc32_update(first, s.data() + cut, s.size() - cut), whole) << cut;
+  }
+}
+
+}  // namespace
+}  // namespace robozoo::mcap

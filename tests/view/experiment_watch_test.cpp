@@ -1,0 +1,164 @@
+// robozoo-view --experiment: the folder's trials read as their logs grow, each
+// arm's mean and standard error per generation (hand-computed), the t-tests
+// per generation, the trials' states and the folders that are no experiment.
+#include <fcntl.h>  // tests/support/subprocess.hpp uses open()
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "evolve/io/event_log.hpp"
+#include "tests/render/messages.hpp"
+#include "tests/support/subprocess.hpp"
+#include "view/experiment_watch.hpp"
+
+namespace robozoo::view {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace robozoo::render::testing;
+using robozoo::testing::TempDir;
+
+/// A trial log whose generations have these best-so-far values; the run was
+/// started for `planned` generations.
+void write_trial(const std::string& path, const std::vector<double>& bsf, int planned = 5) {
+  EventLogWriter w = EventLogWriter::create(path);
+  run_t run = run_message("t");
+  run.generations = planned;
+  append(w, kChannelRun, run);
+  for (size_t g = 0; g < bsf.size(); ++g) {
+    generation_t m = generation_message("t", static_cast<int32_t>(g), 1);
+    m.best_so_far_fitness = bsf[g];
+    append(w, kChannelGeneration, m);
+  }
+}
+
+std::string bytes_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void put(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+TrialProgress trial(const std::string& arm, std::vector<double> bsf) {
+  TrialProgress t;
+  t.arm = arm;
+  t.best_so_far = std::move(bsf);
+  return t;
+}
+
+TEST(ArmCurves, MeanAndStandardErrorByHand) {
+  // feedforward: generation 0 {1, 3}: mean 2, s.d. sqrt(2), s.e. sqrt(2)/sqrt(2) = 1;
+  // generation 1 {2, 4}: 3 +- 1; generation 2 {3} alone: 3, no s.e.
+  // recurrent: {2, 2}: 2 +- 0; {4, 6}: 5 +- 1; {6, 8}: 7 +- 1.
+  const std::vector<TrialProgress> t = {trial("recurrent", {2, 4, 6}), trial("feedforward", {1, 2, 3}),
+                                        trial("feedforward", {3, 4}), trial("recurrent", {2, 6, 8})};
+  const std::vector<ArmCurve> c = arm_curves(t);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].arm, "feedforward");
+  EXPECT_EQ(c[0].mean, (std::vector<double>{2, 3, 3}));
+  EXPECT_DOUBLE_EQ(c[0].se[0], 1.0);
+  EXPECT_DOUBLE_EQ(c[0].se[1], 1.0);
+  EXPECT_TRUE(std::isnan(c[0].se[2]));
+  EXPECT_EQ(c[0].n, (std::vector<int>{2, 2, 1}));
+  EXPECT_EQ(c[1].arm, "recurrent");
+  EXPECT_EQ(c[1].mean, (std::vector<double>{2, 5, 7}));
+  EXPECT_EQ(c[1].se, (std::vector<double>{0, 1, 1}));
+
+  // Student's t at generation 1: pooled variance (2 + 2) / 2 = 2, t = (3 - 5) / sqrt(2 (1/2 + 1/2)) = -sqrt(2),
+  // df 2: p = 1 - |t| / sqrt(t^2 + 2) = 1 - sqrt(2)/2. Generation 0: equal means, p 1. Generation 2: one trial.
+  const std::vector<double> p = generation_p_values(t, "feedforward", "recurrent");
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_NEAR(p[0], 1.0, 1e-12);
+  EXPECT_NEAR(p[1], 1.0 - std::sqrt(2.0) / 2.0, 1e-9);
+  EXPECT_TRUE(std::isnan(p[2]));
+}
+
+TEST(ExperimentWatch, ReadsTheFolderAndFollowsGrowingLogs) {
+  TempDir d;
+  const std::string ff1 = d / "feedforward-s1.lcmlog", rec2 = d / "recurrent-s2.lcmlog";
+  const std::string ff5 = d / "feedforward-s5.lcmlog", rec6 = d / "recurrent-s6.lcmlog";
+  write_trial(ff1, {1.0, 1.1}, 2);        // finished
+  write_trial(rec2, {5.0, 5.1}, 2);       // finished
+  write_trial(ff5, {1.05});               // stopped: old, without a checkpoint
+  fs::last_write_time(ff5, fs::file_time_type::clock::now() - std::chrono::hours(1));
+  // recurrent-s6 grows: first its first generation and half of its second event.
+  write_trial(d / "full.tmp", {5.1, 6.0, 7.0});
+  write_trial(d / "one.tmp", {5.1});
+  const std::string full = bytes_of(d / "full.tmp"), one = bytes_of(d / "one.tmp");
+  fs::remove(d / "full.tmp");
+  fs::remove(d / "one.tmp");
+  ASSERT_EQ(full.compare(0, one.size(), one), 0) << "a log is not a prefix of its longer self";
+  put(rec6, full.substr(0, one.size() + 10));
+  std::ofstream(d / "notes.txt") << "not a trial";
+  std::ofstream(d / "sideways-s3.lcmlog") << "not an arm";
+
+  ExperimentWatch w(d.path, ExperimentWatchOptions{});
+  std::vector<TrialProgress> t = w.trials();
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[0].name, "feedforward-s1");
+  EXPECT_EQ(t[0].state, "finished");
+  EXPECT_EQ(t[1].name, "feedforward-s5");
+  EXPECT_EQ(t[1].seed, 5);
+  EXPECT_EQ(t[1].state, "stopped");
+  EXPECT_EQ(t[3].name, "recurrent-s6");
+  EXPECT_EQ(t[3].best_so_far, (std::vector<double>{5.1}));  // the cut event is not read yet
+  EXPECT_EQ(t[3].state, "running");
+  EXPECT_EQ(t[3].planned, 5);
+  EXPECT_EQ(t[3].offset, static_cast<int64_t>(one.size()));
+
+  nlohmann::json s = nlohmann::json::parse(w.summary());
+  EXPECT_EQ(s["trials"].size(), 4u);
+  EXPECT_EQ(s["arms"][0]["arm"], "feedforward");
+  // Generation 0 of feedforward: {1.0, 1.05}: mean 1.025, s.d. 0.05/sqrt(2), s.e. 0.05/sqrt(2)/sqrt(2) = 0.025.
+  EXPECT_NEAR(s["arms"][0]["mean"][0].get<double>(), 1.025, 1e-12);
+  EXPECT_NEAR(s["arms"][0]["se"][0].get<double>(), 0.025, 1e-12);
+  EXPECT_TRUE(s["arms"][0]["se"][1].is_null());                 // one trial at generation 1
+  // Generation 0: {1.0, 1.05} against {5.0, 5.1}: p far below 0.05; generation 1: one feedforward trial.
+  ASSERT_EQ(s["tests"].size(), 1u);
+  EXPECT_EQ(s["tests"][0]["significant"], nlohmann::json::array({0}));
+  EXPECT_LT(s["tests"][0]["p"][0].get<double>(), 0.001);
+  EXPECT_EQ(w.log_of("recurrent-s6"), rec6);
+  EXPECT_EQ(w.log_of("recurrent-s9"), "");
+
+  EXPECT_FALSE(w.poll());  // nothing new
+  put(rec6, full);          // the rest arrives
+  EXPECT_TRUE(w.poll());
+  t = w.trials();
+  EXPECT_EQ(t[3].best_so_far, (std::vector<double>{5.1, 6.0, 7.0}));
+  EXPECT_EQ(t[3].offset, static_cast<int64_t>(full.size()));
+  s = nlohmann::json::parse(w.summary());
+  EXPECT_EQ(s["trials"][3]["generations"], 3);
+  EXPECT_DOUBLE_EQ(s["arms"][1]["mean"][1].get<double>(), (5.1 + 6.0) / 2);
+  // A new trial appears.
+  write_trial(d / "feedforward-s13.lcmlog", {0.5});
+  EXPECT_TRUE(w.poll());
+  EXPECT_EQ(w.trials().size(), 5u);
+  s = nlohmann::json::parse(w.summary());
+  EXPECT_EQ(s["trials"][1]["name"], "feedforward-s5");  // by arm, then seed: s13 after s5
+  EXPECT_EQ(s["trials"][2]["name"], "feedforward-s13");
+}
+
+TEST(ExperimentWatch, AFolderWithoutAnExperimentIsRefused) {
+  TempDir d;
+  std::ofstream(d / "feedforward.lcmlog") << "x";
+  try {
+    ExperimentWatch w(d.path);
+    FAIL() << "no experiment, yet watched";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no experiment here"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(ExperimentWatch(d / "feedforward.lcmlog"), std::runtime_error);
+  EXPECT_THROW(ExperimentWatch(d / "missing"), std::runtime_error);
+  const robozoo::testing::Outcome o =
+      robozoo::testing::run_shell(robozoo::testing::bin("robozoo-view") + " --experiment " + d.path);
+  EXPECT_NE(o.status, 0);
+  EXPECT_NE(o.output.find("no experiment here"), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+}
+
+}  // namespace
+}  // namespace robozoo::view

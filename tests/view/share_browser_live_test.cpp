@@ -1,0 +1,176 @@
+// robozoo-view's one-file replays and experiment page in headless Chromium
+// (software WebGL), each test again in a private network namespace (`unshare
+// -n`: only its own loopback, nothing else reachable). Runs alone (RUN_SERIAL:
+// the name ends in _live_test).
+//  - An exported champion opened from file://, no server running: the robot is
+//    drawn (red and blue sphere pixels) and it plays its samples.
+//  - The experiment page of a small robozoo-experiment folder lists every
+//    trial, and shows the new generation when the experiment is extended by one.
+// ROBOZOO_VIEW_SHOTS=DIR keeps the screenshots.
+#include <fcntl.h>  // tests/support/subprocess.hpp uses open()
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "render/gl/png_io.hpp"
+#include "tests/render/fixtures.hpp"
+#include "tests/support/browser.hpp"
+#include "tests/support/evolve_runs.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo::view {
+namespace {
+
+using namespace robozoo::testing;
+using Clock = std::chrono::steady_clock;
+
+bool inside_namespace() { return std::getenv("ROBOZOO_VIEW_NETNS") != nullptr; }
+
+void run_inside(const std::string& test) {
+  char self[4096] = {0};
+  ASSERT_GT(::readlink("/proc/self/exe", self, sizeof self - 1), 0);
+  const robozoo::testing::Outcome o = run_shell("timeout 400 unshare -n sh -c 'ip link set lo up && ROBOZOO_VIEW_NETNS=1 exec " +
+                              std::string(self) + " --gtest_filter=" + test + "'");
+  EXPECT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("[  PASSED  ] 1 test"), std::string::npos) << o.output;
+  std::istringstream lines(o.output);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line[0] != '[' && line.rfind("Running main", 0) != 0 && line.rfind("Note:", 0) != 0)
+      std::cout << line << "\n";
+}
+
+#define IN_NAMESPACE()                                                            \
+  if (!inside_namespace()) {                                                      \
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();  \
+    return run_inside(std::string(info->test_suite_name()) + "." + info->name()); \
+  }
+
+template <class Pred>
+bool wait_for(Pred pred, double seconds) {
+  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+  while (Clock::now() < end) {
+    if (pred()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  return pred();
+}
+
+/// Writes the PNG to `path` (and a copy into ROBOZOO_VIEW_SHOTS) and decodes it.
+render::Image keep_png(const std::vector<uint8_t>& png, const std::string& path) {
+  std::vector<std::string> paths = {path};
+  if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS"))
+    paths.push_back(std::string(keep) + "/" + path.substr(path.rfind('/') + 1));
+  for (const std::string& p : paths)
+    std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  return render::read_png(path);
+}
+
+struct Pixels {
+  int red = 0, blue = 0;
+};
+
+Pixels count_colours(const render::Image& img) {
+  Pixels p;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      const render::Rgb c = img.at(x, y);
+      p.red += render::testing::is_red(c.r, c.g, c.b);
+      p.blue += render::testing::is_blue(c.r, c.g, c.b);
+    }
+  return p;
+}
+
+TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
+  IN_NAMESPACE();
+  TempDir dir;
+  const std::string log = dir / "run.lcmlog", html = dir / "champion.html";
+  render::testing::write_small_run(log);
+  const robozoo::testing::Outcome e = run_shell(bin("robozoo-view") + " export " + log + " -o " + html);
+  ASSERT_EQ(e.status, 0) << e.output;
+  std::cout << e.output;
+  HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
+  const std::string tab = browser.open("file://" + html);
+  auto stats = [&] { return browser.evaluate(tab, "window.robozooView ? robozooView.stats() : null"); };
+  ASSERT_TRUE(wait_for([&] { const auto s = stats(); return !s.is_null() && s["samples"] > 1; }, 60))
+      << stats().dump() << "\n" << read_file(dir / "chromium.txt");
+  EXPECT_EQ(browser.evaluate(tab, "document.getElementById('status').textContent"), "offline file");
+  EXPECT_EQ(browser.evaluate(tab, "document.getElementById('save-html').hidden"), true);
+  // It plays: the page draws again and its clock moves over the samples (a busy machine's
+  // software WebGL may take a while between frames).
+  const nlohmann::json s0 = stats();
+  nlohmann::json s1;
+  EXPECT_TRUE(wait_for([&] {
+    s1 = stats();
+    return s1["frames"].get<int>() > s0["frames"].get<int>() + 2 && s1["simTime"] != s0["simTime"];
+  }, 30)) << s0.dump() << "\n" << s1.dump();
+  EXPECT_GE(s1["chartPoints"].get<int>(), 1);
+  keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 800}}), dir / "view-export.png");
+  // The robot's pixels: in the 3D view only (the chart has a red line too).
+  const Pixels p = count_colours(keep_png(browser.screenshot(tab, s1["canvas"]), dir / "view-export-stage.png"));
+  EXPECT_GT(p.red, 30) << s1.dump();
+  EXPECT_GT(p.blue, 30) << s1.dump();
+  std::cout << "exported champion from file://: genome " << s1["robot"] << ", " << s1["spheres"] << " spheres, "
+            << s1["samples"] << " samples, " << p.red << " red and " << p.blue << " blue pixels\n";
+}
+
+TEST(ViewShare, ExperimentPageShowsEveryTrialAndFollowsThem) {
+  IN_NAMESPACE();
+  TempDir dir;
+  const std::string out = dir / "exp";
+  auto experiment = [&](int generations) {
+    return run_shell(join({bin("robozoo-experiment"), "--out", out, "--trials", "2", "--population", "8", "--steps",
+                           "200", "--workers", "1", "--progress-interval", "0", "--generations",
+                           std::to_string(generations)}));
+  };
+  const robozoo::testing::Outcome first = experiment(2);
+  ASSERT_EQ(first.status, 0) << first.output;
+  const pid_t view = spawn({bin("robozoo-view"), "--experiment", out, "--port", "8080", "--poll", "0.5"}, dir / "view.txt");
+  ASSERT_TRUE(wait_for([&] { return read_file(dir / "view.txt").find("open http") != std::string::npos; }, 20))
+      << read_file(dir / "view.txt");
+  HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
+  const std::string tab = browser.open("http://127.0.0.1:8080/experiment.html");
+  auto stats = [&] { return browser.evaluate(tab, "window.robozooExperiment ? robozooExperiment.stats() : null"); };
+  auto all_at = [&](int g) {
+    const nlohmann::json s = stats();
+    if (s.is_null() || s["rows"] != 4) return false;
+    for (const auto& t : s["trials"])
+      if (t["generations"] != g || t["state"] != "finished") return false;
+    return true;
+  };
+  ASSERT_TRUE(wait_for([&] { return all_at(2); }, 30)) << stats().dump() << read_file(dir / "view.txt");
+  const nlohmann::json s = stats();
+  EXPECT_EQ(s["arms"], nlohmann::json::array({"feedforward", "recurrent"}));
+  for (const char* name : {"feedforward-s1", "recurrent-s2", "feedforward-s5", "recurrent-s6"})
+    EXPECT_NE(s.dump().find(name), std::string::npos) << name;
+  // A trial's champion: the one-file replay of its log.
+  const nlohmann::json trial = browser.evaluate(
+      tab, "fetch('/trial?name=recurrent-s2').then(async r => ({status: r.status, text: await r.text()}))");
+  EXPECT_EQ(trial["status"], 200);
+  EXPECT_NE(trial["text"].get<std::string>().find("id=\"robozoo-data\""), std::string::npos);
+  EXPECT_EQ(browser.evaluate(tab, "fetch('/trial?name=recurrent-s99').then(r => r.status)"), 404);
+
+  // One more generation for every trial: the page follows.
+  const robozoo::testing::Outcome more = experiment(3);
+  ASSERT_EQ(more.status, 0) << more.output;
+  ASSERT_TRUE(wait_for([&] { return all_at(3); }, 30)) << stats().dump();
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const render::Image shot = keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 800}}),
+                                      dir / "view-experiment.png");
+  int coloured = 0;  // the curves: the arms' colours, not grey
+  for (int y = 0; y < shot.height(); ++y)
+    for (int x = 0; x < 860; ++x) {
+      const render::Rgb c = shot.at(x, y);
+      coloured += std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 60;
+    }
+  EXPECT_GT(coloured, 500);
+  kill_process(view, SIGTERM);
+  EXPECT_EQ(wait_status(view), 0) << read_file(dir / "view.txt");
+  std::cout << "experiment page: 4 trials followed from 2 to 3 generations, " << coloured << " coloured pixels\n";
+}
+
+}  // namespace
+}  // namespace robozoo::view
