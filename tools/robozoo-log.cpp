@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evolve/analysis/run_program.hpp"
+#include "util/run_program.hpp"
 #include "evolve/core/version.hpp"
 #include "evolve/io/log_compare.hpp"
 #include "runlog/cppn_dot.hpp"

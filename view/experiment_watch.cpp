@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "evolve/analysis/ttest.hpp"
-#include "evolve/experiment/trial_plan.hpp"
+#include "study/analysis/ttest.hpp"
+#include "study/experiment/trial_plan.hpp"
 #include "evolve/messages/build.hpp"
 #include "robozoo/generation_t.hpp"
 #include "robozoo/run_t.hpp"

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "study/analysis/run_program.hpp"
+#include "util/run_program.hpp"
 
 namespace robozoo {
 

@@ -14,7 +14,7 @@
 #include "study/analysis/plot_scripts.hpp"
 #include "study/analysis/report.hpp"
 #include "study/analysis/reproduce_commands.hpp"
-#include "study/analysis/run_program.hpp"
+#include "util/run_program.hpp"
 #include "study/experiment/progress_estimate.hpp"
 #include "util/program_path.hpp"
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "evolve/analysis/run_program.hpp"
+#include "util/run_program.hpp"
 
 namespace robozoo {
 namespace {

@@ -1,4 +1,4 @@
-#include "study/analysis/run_program.hpp"
+#include "util/run_program.hpp"
 
 #include <fcntl.h>
 #include <sys/wait.h>
