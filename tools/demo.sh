@@ -8,23 +8,24 @@
 #
 #   tools/demo.sh [--port N] [--population N] [--generations N] [--seed N]
 #
-# Defaults: port 8080, population 60, 20 generations, seed 1, recurrent CPPNs, one
-# worker per core (about 8 minutes in all on a fresh 2-core Debian 12 machine).
+# Defaults: port 8080, population 50, 16 generations, seed 1, recurrent CPPNs, one
+# worker per core (about 8 minutes in all, install and build included, on a fresh
+# 2-core Debian 12 machine).
 # Leaves in runs/: demo.lcmlog (and its checkpoint), demo-zoo.png, demo-champion.mp4,
 # demo-check.txt (the live check's report) and demo-view.txt (the viewer's output).
 # Ctrl-C stops everything it started.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 port=8080
-population=60
-generations=20
+population=50
+generations=16
 seed=1
 number() {  # option, value
   [[ "${2:-}" =~ ^[0-9]+$ ]] || { echo "demo.sh: $1 needs a whole number, not '${2:-}'" >&2; exit 2; }
 }
 while [ $# -gt 0 ]; do
   case "$1" in
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --port) number "$1" "${2:-}"; port=$2; shift 2 ;;
     --population) number "$1" "${2:-}"; population=$2; shift 2 ;;
     --generations) number "$1" "${2:-}"; generations=$2; shift 2 ;;
