@@ -275,7 +275,9 @@ int main(int argc, char** argv) {
   live.picture.cell_width = 640;
   live.picture.cell_height = 480;
   CLI::App* lc = app.add_subcommand("live", "latest.png and one video per new champion, from an LCM bus");
-  lc->add_option("--lcm-url", live.url, "LCM URL to listen on")->capture_default_str();
+  lc->add_option("--lcm-url", live.url, "LCM URL to listen on (given alone: LCM's default URL)")
+      ->expected(0, 1)
+      ->capture_default_str();
   lc->add_option("--out", live.out_dir, "output folder")->required();
   lc->add_option("--stream-timeout", live.stream_timeout, "seconds of silence that complete a pose stream")
       ->capture_default_str();

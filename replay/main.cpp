@@ -304,7 +304,9 @@ int main(int argc, char** argv) {
       "Republish the log on an LCM bus at real-time speed. The latest ROBOZOO_RUN and the current champion's "
       "genome and morphology always go out before its poses, so a viewer that joins can draw at once.");
   playc->add_option("LOG", p.log, "the LCM log")->required();
-  playc->add_option("--lcm-url", p.lcm_url, "LCM URL to publish on")->capture_default_str();
+  playc->add_option("--lcm-url", p.lcm_url, "LCM URL to publish on (given alone: LCM's default URL)")
+      ->expected(0, 1)
+      ->capture_default_str();
   playc->add_option("--speed", p.options.speed, "times real time")->check(CLI::PositiveNumber)->capture_default_str();
   playc->add_option("--channels", p.options.channels, "regular expression of the channels to play (whole name)")
       ->capture_default_str();
@@ -324,7 +326,9 @@ int main(int argc, char** argv) {
   simc->add_option("LOG", s.log, "the LCM log")->required();
   simc->add_option("--genome", s.options.genome_id, "genome id")->required();
   simc->add_option("--run-id", s.options.run_id, "its run (only needed when the log holds several runs)");
-  simc->add_option("--lcm-url", s.lcm_url, "LCM URL to publish on")->capture_default_str();
+  simc->add_option("--lcm-url", s.lcm_url, "LCM URL to publish on (given alone: LCM's default URL)")
+      ->expected(0, 1)
+      ->capture_default_str();
   simc->add_option("--speed", s.options.speed, "times real time")->check(CLI::PositiveNumber)->capture_default_str();
   simc->add_option("--pose-every", s.options.pose_every, "publish every k-th step")
       ->check(CLI::Range(1, 1000000000))

@@ -1,12 +1,27 @@
 #!/usr/bin/env bash
 # Configures and builds robozoo (Release) into ./build, using every core, through
 # ccache when it is installed (the same objects, sooner on a rebuild or a fresh clone).
+#
+#   tools/build.sh                      # every program and test
+#   tools/build.sh robozoo-evolve ...   # only these targets (and what they link)
+#   tools/build.sh --werror [TARGET...] # warnings are errors (ROBOZOO_WERROR=ON, what CI builds)
+#
+# Environment: BUILD_DIR (default build), JOBS (compile jobs, default: cores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${BUILD_DIR:-build}"
-launcher=()
+cmake_args=()
+targets=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --werror) cmake_args+=(-DROBOZOO_WERROR=ON); shift ;;
+    -*) echo "build.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
+    *) targets+=(--target "$1"); shift ;;
+  esac
+done
 if command -v ccache >/dev/null 2>&1; then
-  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  cmake_args+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
-cmake --build "$BUILD_DIR" -j"$(nproc)"
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cmake_args[@]}" >/dev/null
+cmake --build "$BUILD_DIR" -j"${JOBS:-$(nproc)}" "${targets[@]}"

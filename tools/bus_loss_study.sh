@@ -11,7 +11,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 trials="${1:-5}"
-case "$trials" in -h|--help) sed -n '2,10p' "$0"; exit 0 ;; esac
+case "$trials" in -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
+[ $# -le 1 ] && [[ "$trials" =~ ^[1-9][0-9]*$ ]] || {
+  echo "bus_loss_study.sh: unknown option $* (only TRIALS, a positive number, or --help)" >&2
+  exit 2
+}
 bin=build/bin
 for b in robozoo-evolve robozoo-log; do
   [ -x "$bin/$b" ] || { echo "bus_loss_study: $bin/$b is missing: run tools/build.sh first" >&2; exit 2; }

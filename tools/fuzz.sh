@@ -4,6 +4,7 @@
 # short real robozoo-evolve run, and runs each target for SECONDS (default 10).
 #
 #   tools/fuzz.sh [SECONDS] [TARGET...]      e.g. tools/fuzz.sh 600 fuzz_pose_t
+#   tools/fuzz.sh --seconds 600 [TARGET...]  the same
 #
 # Prints executions, coverage and the result per target; exits 1 when a target
 # found a crash, a hang (an input running over 10 s), an OOM (over 2 GiB, or one
@@ -14,8 +15,23 @@
 # robozoo-evolve makes the seed run), JOBS (compile jobs, default: cores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-SECONDS_EACH="${1:-10}"
-shift || true
+SECONDS_EACH=10
+targets=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --seconds) SECONDS_EACH="${2:-}"; shift 2 || shift ;;
+    -*) echo "fuzz.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
+    fuzz_*) targets+=("$1"); shift ;;
+    *) SECONDS_EACH="$1"; shift ;;
+  esac
+done
+if ! [[ "$SECONDS_EACH" =~ ^[0-9]+$ ]]; then
+  echo "fuzz.sh: SECONDS must be a whole number of seconds, not '$SECONDS_EACH'" >&2; exit 2
+fi
+for t in "${targets[@]}"; do
+  [ -f "fuzz/$t.cpp" ] || { echo "fuzz.sh: no fuzz target $t (fuzz/fuzz_*.cpp)" >&2; exit 2; }
+done
 FUZZ_DIR="${FUZZ_BUILD_DIR:-build-fuzz}"
 BUILD_DIR="${BUILD_DIR:-build}"
 JOBS="${JOBS:-$(nproc)}"
@@ -49,7 +65,6 @@ if [ ! -f "$seeds/.done" ]; then
   touch "$seeds/.done"
 fi
 
-targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   for f in fuzz/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done
 fi

@@ -42,6 +42,7 @@
 #include "evolve/run/evolution.hpp"
 #include "evolve/run/pool_evaluator.hpp"
 #include "evolve/core/version.hpp"
+#include "evolve/io/bus.hpp"
 
 using namespace robozoo;
 using Clock = std::chrono::steady_clock;
@@ -591,7 +592,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000000000));
   app.add_option("--config", o.config_file, "configuration file (.json or .toml); flags given override it");
   app.add_option("--log", o.log_path, "keep the run's log here (default: a temporary folder, removed); with --resume, where the copy goes (must not exist)");
-  app.add_option("--lcm-url", o.lcm_url, "publish live on this LCM URL while measuring (default: no publishing)");
+  app.add_option("--lcm-url", o.lcm_url,
+                 "publish live on this LCM URL while measuring (given alone: LCM's default URL; default: no publishing)")
+      ->expected(0, 1)
+      ->default_str(robozoo::kDefaultLcmUrl);
   app.add_option("--project", ranks_text, "rank counts to project to, comma-separated (default 8,32,128)");
   app.add_option("--latency-us", o.latency_us, "one-way message latency of the cluster (us, default 50: TCP)")
       ->check(CLI::NonNegativeNumber);

@@ -2,6 +2,11 @@
 # Installs every Debian 12 package robozoo needs to build, test and run.
 # Idempotent: runs `apt-get update` and `apt-get install` only when something is missing.
 set -euo pipefail
+case "${1:-}" in
+  "") ;;
+  -h|--help) echo "tools/setup.sh: installs the Debian 12 packages robozoo needs (apt-get, as root or with sudo); no options"; exit 0 ;;
+  *) echo "setup.sh: unknown option $1 (no options but --help)" >&2; exit 2 ;;
+esac
 
 PACKAGES=(
   build-essential cmake pkg-config git
@@ -17,6 +22,7 @@ PACKAGES=(
   iproute2 util-linux
   libzstd-dev liblz4-dev graphviz nodejs npm   # robozoo-log export (MCAP) and cppn; the MCAP check's node
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizer runtimes (tools/fuzz.sh)
+  clang-format               # tools/format.sh (clang-format 14)
 )
 
 missing=()

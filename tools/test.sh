@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
-# The README's test command: install what is missing, build, run every test,
-# then run every fuzz target for 10 s (tools/fuzz.sh).
+# The README's test command: install what is missing, build with warnings as
+# errors, run every test, prove the same bits from clang and gcc -O0 builds
+# (tools/cross_build.sh), then run every fuzz target for 10 s (tools/fuzz.sh).
 #
-#   tools/test.sh              # build/ and ctest, then the fuzz targets (CI)
-#   tools/test.sh --no-fuzz    # build/ and ctest only
+#   tools/test.sh              # all of it (CI)
+#   tools/test.sh --no-fuzz    # build/ (-Werror) and ctest only
 #   tools/test.sh --sanitize   # the whole suite under AddressSanitizer and
 #                              # UndefinedBehaviorSanitizer, in build-sanitize/
+# Environment: ROBOZOO_FORMAT_CHECK=1 also fails on unformatted sources (tools/format.sh --check).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-}"
 case "$mode" in
   ""|--no-fuzz|--sanitize) ;;
-  -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+  -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   *) echo "test.sh: unknown option $mode (use --no-fuzz or --sanitize)" >&2; exit 2 ;;
 esac
 tools/setup.sh
@@ -59,8 +61,12 @@ if [ "$mode" = "--sanitize" ]; then
   exit "$status"
 fi
 
-tools/build.sh
+if [ "${ROBOZOO_FORMAT_CHECK:-0}" = 1 ]; then
+  tools/format.sh --check
+fi
+tools/build.sh --werror
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j"$(nproc)")
 if [ "$mode" != "--no-fuzz" ]; then
+  tools/cross_build.sh
   tools/fuzz.sh 10
 fi
