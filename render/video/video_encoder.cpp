@@ -14,6 +14,19 @@ extern "C" {
 namespace robozoo::render {
 
 namespace {
+
+/// libx264's instruction sets, or "" for its own choice. Its AVX-512 kernels read memory
+/// libx264 never wrote: on an AVX-512 machine the same frames gave other bytes whenever the
+/// heap held other garbage (glibc's M_PERTURB showed it: QP 26.33 became 25.54-25.71). Its
+/// assembly is otherwise bit-exact with its C code, so capping it at AVX2 there gives the
+/// bytes of every other machine.
+std::string x264_instruction_sets() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx2")) return "AVX2";
+#endif
+  return "";
+}
 std::string av_error(int code) {
   char buf[AV_ERROR_MAX_STRING_SIZE] = {0};
   av_strerror(code, buf, sizeof buf);
@@ -104,6 +117,8 @@ VideoEncoder::VideoEncoder(const std::string& path, const EncoderOptions& o) : i
   AVDictionary* opts = nullptr;
   av_dict_set(&opts, "preset", o.preset.c_str(), 0);
   av_dict_set(&opts, "crf", std::to_string(o.crf).c_str(), 0);
+  const std::string sets = x264_instruction_sets();
+  if (!sets.empty()) av_dict_set(&opts, "x264-params", ("asm=" + sets).c_str(), 0);
   r = avcodec_open2(m.codec, x264, &opts);
   av_dict_free(&opts);
   if (r < 0) throw std::runtime_error("libx264 cannot start (preset '" + o.preset + "'?): " + av_error(r));

@@ -3,6 +3,8 @@
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>
 
+#include <malloc.h>
+
 #include <fstream>
 #include <iterator>
 
@@ -114,6 +116,22 @@ TEST(VideoEncoder, DefaultBytesAreTheRecordedOnes) {
   const std::string bytes = encode_gradients(dir / "default.mp4", o, 12);
   EXPECT_EQ(bytes.size(), kRecordedDefaultSize);
   EXPECT_EQ(fnv1a(bytes), kRecordedDefaultHash);
+}
+
+// The same frames give the same bytes whatever the heap held before: glibc's
+// M_PERTURB fills every freed and every new block with a pattern, so an encoder
+// that read memory it never wrote would give other bytes under each pattern.
+TEST(VideoEncoder, SameBytesWhateverTheHeapHeld) {
+  TempDir dir;
+  EncoderOptions o;
+  o.width = 64;
+  o.height = 48;
+  for (int pattern : {165, 17, 0}) {
+    ASSERT_EQ(mallopt(M_PERTURB, pattern), 1);
+    const std::string bytes = encode_gradients(dir / ("p" + std::to_string(pattern) + ".mp4"), o, 12);
+    EXPECT_EQ(bytes.size(), kRecordedDefaultSize) << "heap pattern " << pattern;
+    EXPECT_EQ(fnv1a(bytes), kRecordedDefaultHash) << "heap pattern " << pattern;
+  }
 }
 
 // --fast: libx264's faster preset on its own thread count; everything else as given.
