@@ -5,6 +5,11 @@
 # build/npm. Idempotent: installs again only when the lock file changed.
 #   tools/npm_deps.sh [DIR]      prints DIR/node_modules on success
 set -euo pipefail
+case "${1:-}" in
+  -h|--help) echo "tools/npm_deps.sh [DIR]: installs the pinned npm packages of the MCAP checks into DIR (default build/npm), prints DIR/node_modules"; exit 0 ;;
+  -*) echo "npm_deps.sh: unknown option $1 (tools/npm_deps.sh [DIR])" >&2; exit 2 ;;
+esac
+if [ $# -gt 1 ]; then echo "npm_deps.sh: one folder at most, not $#" >&2; exit 2; fi
 
 here="$(cd "$(dirname "$0")" && pwd)"
 dir="${1:-$here/../build/npm}"

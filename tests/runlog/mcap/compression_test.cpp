@@ -25,7 +25,9 @@ TEST(Compression, RoundTripsAndShrinksRepetitiveData) {
   const Bytes data = sample();
   for (Compression c : {Compression::Zstd, Compression::Lz4, Compression::None}) {
     const Bytes packed = compress(c, data);
-    if (c != Compression::None) EXPECT_LT(packed.size(), data.size() / 4) << compression_name(c);
+    if (c != Compression::None) {
+      EXPECT_LT(packed.size(), data.size() / 4) << compression_name(c);
+    }
     EXPECT_EQ(decompress(c, packed, data.size()), data) << compression_name(c);
   }
 }
