@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # The README's test command: install what is missing, build with warnings as
-# errors, run every test, prove the same bits from clang and gcc -O0 builds
-# (tools/cross_build.sh), then run every fuzz target for 10 s (tools/fuzz.sh).
+# errors, run every test, then run every fuzz target for 10 s (tools/fuzz.sh).
 #
 #   tools/test.sh              # all of it (CI)
 #   tools/test.sh --no-fuzz    # build/ (-Werror) and ctest only
 #   tools/test.sh --sanitize   # the whole suite under AddressSanitizer and
 #                              # UndefinedBehaviorSanitizer, in build-sanitize/
-# Environment: ROBOZOO_FORMAT_CHECK=1 also fails on unformatted sources (tools/format.sh --check).
+# Environment: ROBOZOO_FORMAT_CHECK=1 also fails on unformatted sources (tools/format.sh --check);
+# ROBOZOO_CROSS_BUILD=1 also proves the same bits from clang and gcc -O0 builds (tools/cross_build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-}"
@@ -67,6 +67,8 @@ fi
 tools/build.sh --werror
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j"$(nproc)")
 if [ "$mode" != "--no-fuzz" ]; then
-  tools/cross_build.sh
+  # The cross-build check (a run made by gcc -O3, clang and gcc -O0, checked under each other)
+  # runs when asked: ROBOZOO_CROSS_BUILD=1. It is not yet timed on a machine without a compiler cache.
+  if [ "${ROBOZOO_CROSS_BUILD:-0}" = 1 ]; then tools/cross_build.sh; fi
   tools/fuzz.sh 10
 fi
