@@ -13,7 +13,7 @@
 #include "replay/pose_compare.hpp"
 #include "runlog/regrow.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 const char* status_name(ChampionResult::Status s) {
   switch (s) {
@@ -211,4 +211,4 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
   return finish();
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -12,7 +12,7 @@
 #include "replay/recompute_cache.hpp"
 #include "replay/value_compare.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 /// What a genome's check must find of its trajectory (log_structure decides it
 /// from the generation's messages).
@@ -71,4 +71,4 @@ ChampionResult check_champion(const LogContents& log, const LogIndex& index, con
                               const RunConfig& config, const ChampionCheckParams& params,
                               RecomputeCache* cache = nullptr, TrajectoryRule trajectory = TrajectoryRule::MayBeCut);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -8,7 +8,7 @@
 #include "replay/log_structure.hpp"
 #include "replay/logged_config.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -123,4 +123,4 @@ CheckReport check_log_file(const std::string& path, const CheckOptions& options,
   return r;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

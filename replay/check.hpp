@@ -9,7 +9,7 @@
 #include "replay/check_report.hpp"
 #include "runlog/log_reader.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 struct CheckOptions {
   double tolerance = 0.0;    ///< 0: bit for bit; else the largest value_error allowed (dimensionless)
@@ -29,4 +29,4 @@ CheckReport check_log(const ScannedLog& log, const CheckOptions& options, const 
 /// Reads `path` and checks it; an unreadable file is a fatal report.
 CheckReport check_log_file(const std::string& path, const CheckOptions& options, const CheckProgress& progress = {});
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -6,7 +6,7 @@
 
 #include "evolve/messages/build.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -207,4 +207,4 @@ nlohmann::json to_json(const CheckReport& r) {
   return j;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -11,7 +11,7 @@
 #include "replay/log_structure.hpp"
 #include "runlog/log_index.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 struct RunInfo {
   std::string run_id;
@@ -53,4 +53,4 @@ std::string format_text(const CheckReport& r);
 /// read back to the same bits; errors are numbers (null when infinite).
 nlohmann::json to_json(const CheckReport& r);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -18,7 +18,7 @@
 #include "runlog/log_index.hpp"
 #include "runlog/log_reader.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -282,4 +282,4 @@ nlohmann::json to_json(const FullCheckReport& r) {
   return j;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -21,7 +21,7 @@
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 struct FullCheckOptions {
   bool force = false;            ///< re-run a log written by another software version
@@ -76,4 +76,4 @@ std::string format_full_text(const FullCheckReport& r);
 /// The same, machine-readable.
 nlohmann::json to_json(const FullCheckReport& r);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -22,7 +22,7 @@
 #include "runlog/log_index.hpp"
 #include "runlog/regrow.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -351,4 +351,4 @@ std::string format_live_summary(const LiveCheckSummary& s) {
   return o;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -28,7 +28,7 @@
 #include "evolve/io/event_log.hpp"
 #include "replay/champion_check.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 struct LiveCheckOptions {
   double tolerance = 0.0;         ///< 0: bit for bit; else the largest value_error allowed (dimensionless)
@@ -91,4 +91,4 @@ LiveCheckSummary check_live(const std::string& url, const LiveCheckOptions& opti
 /// The summary line: champions ok / diverged / unusable / with loss, loss, exit.
 std::string format_live_summary(const LiveCheckSummary& s);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

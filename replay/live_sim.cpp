@@ -10,7 +10,7 @@
 #include "replay/logged_config.hpp"
 #include "runlog/regrow.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -79,4 +79,4 @@ LiveSimStats live_simulate(const LogContents& log, const LogIndex& index, const 
   return stats;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

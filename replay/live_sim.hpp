@@ -14,7 +14,7 @@
 #include "runlog/log_index.hpp"
 #include "runlog/play_clock.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 struct LiveSimOptions {
   int64_t genome_id = -1;  ///< the genome to re-simulate
@@ -40,4 +40,4 @@ struct LiveSimStats {
 LiveSimStats live_simulate(const LogContents& log, const LogIndex& index, const LiveSimOptions& options,
                            PlayClock& clock, const PublishFn& publish);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

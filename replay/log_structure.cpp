@@ -11,7 +11,7 @@
 #include "replay/value_compare.hpp"
 #include "runlog/regrow.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -386,4 +386,4 @@ std::string describe(const LogDifference& d) {
   return s;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -32,7 +32,7 @@
 #include "replay/champion_check.hpp"
 #include "runlog/log_index.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 /// A message that is not what robozoo-evolve writes at that place.
 struct LogDifference {
@@ -64,4 +64,4 @@ StructureReport check_log_structure(const LogContents& log, const LogIndex& inde
 /// "event 812 (ROBOZOO_GENERATION) run r gen 3 best_fitness: logged X, expected Y (rule)".
 std::string describe(const LogDifference& d);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

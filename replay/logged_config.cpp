@@ -5,7 +5,7 @@
 
 #include "evolve/messages/build.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -66,4 +66,4 @@ std::string version_refusal(const run_t& m) {
          software_version() + "; another version may grow or simulate differently (--force checks it anyway)";
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

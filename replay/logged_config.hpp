@@ -8,7 +8,7 @@
 #include "evolve/config/run_config.hpp"
 #include "robozoo/run_t.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 /// Throws std::invalid_argument naming the run and the problem: config_json is
 /// not JSON, lacks a key, holds an invalid value, or disagrees with run_t's
@@ -19,4 +19,4 @@ RunConfig config_from_run_message(const run_t& m);
 /// sentence that refuses it (a different version may grow or simulate differently).
 std::string version_refusal(const run_t& m);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -30,6 +30,7 @@
 namespace {
 
 using namespace robozoo;
+using namespace robozoo::replay;
 
 struct CheckArgs {
   std::string log;

@@ -6,7 +6,7 @@
 
 #include "runlog/message_json.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 
@@ -66,4 +66,4 @@ FieldDifference first_field_difference(const std::string& channel, const std::ve
   return out;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace robozoo {
+namespace robozoo::replay {
 
 struct FieldDifference {
   std::string field;   ///< path of the first differing field; empty if none was found
@@ -20,4 +20,4 @@ struct FieldDifference {
 FieldDifference first_field_difference(const std::string& channel, const std::vector<uint8_t>& a,
                                        const std::vector<uint8_t>& b, const std::vector<std::string>& ignore = {});
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace robozoo {
+namespace robozoo::replay {
 
 bool compare_morphology(const morphology_t& a, const morphology_t& b, ValueComparer& cmp) {
   const int64_t before = cmp.mismatch_count();
@@ -63,4 +63,4 @@ bool compare_morphology(const morphology_t& a, const morphology_t& b, ValueCompa
   return cmp.mismatch_count() == before;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

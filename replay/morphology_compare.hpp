@@ -4,10 +4,10 @@
 #include "replay/value_compare.hpp"
 #include "robozoo/morphology_t.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 /// Adds every difference to `cmp` (context "morphology"); returns true when
 /// none was found. Arrays are compared only where their counts agree.
 bool compare_morphology(const morphology_t& logged, const morphology_t& recomputed, ValueComparer& cmp);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

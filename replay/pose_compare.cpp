@@ -1,6 +1,6 @@
 #include "replay/pose_compare.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 bool compare_pose(const pose_t& a, const pose_t& b, ValueComparer& cmp) {
   const int64_t before = cmp.mismatch_count();
@@ -39,4 +39,4 @@ bool compare_pose(const pose_t& a, const pose_t& b, ValueComparer& cmp) {
   return cmp.mismatch_count() == before;
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -5,10 +5,10 @@
 #include "replay/value_compare.hpp"
 #include "robozoo/pose_t.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 /// Adds every difference to `cmp` (context "pose", the logged step); returns
 /// true when none was found. Arrays are compared only where their counts agree.
 bool compare_pose(const pose_t& logged, const pose_t& recomputed, ValueComparer& cmp);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

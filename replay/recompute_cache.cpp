@@ -1,6 +1,6 @@
 #include "replay/recompute_cache.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 namespace {
 uint64_t genes_hash(const Genome& g) {
@@ -30,4 +30,4 @@ const RecomputeCache::Entry& RecomputeCache::add(Entry e) {
   return *bucket.back();
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -14,7 +14,7 @@
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/growth/robot.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 
 class RecomputeCache {
  public:
@@ -39,4 +39,4 @@ class RecomputeCache {
   size_t size_ = 0;
 };
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace robozoo {
+namespace robozoo::replay {
 
 double value_error(double a, double b) {
   uint64_t ba, bb;
@@ -90,4 +90,4 @@ void ValueComparer::record(const FieldRef& f, std::string logged, std::string re
   kept_.push_back(std::move(m));
 }
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace robozoo {
+namespace robozoo::replay {
 
 /// One value that differs.
 struct Mismatch {
@@ -88,4 +88,4 @@ class ValueComparer {
 /// A double as text that reads back to the same bits (%.17g).
 std::string exact_text(double v);
 
-}  // namespace robozoo
+}  // namespace robozoo::replay

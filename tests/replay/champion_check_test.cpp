@@ -5,7 +5,7 @@
 #include "replay/logged_config.hpp"
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -130,4 +130,4 @@ TEST(ChampionCheck, StatusNames) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 ChampionResult ok(int gen) {
@@ -116,4 +116,4 @@ TEST(CheckReport, JsonCarriesTheSameReport) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -10,7 +10,7 @@
 
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -345,4 +345,4 @@ TEST(Check, ProgressIsReportedPerGenome) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

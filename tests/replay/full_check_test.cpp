@@ -9,7 +9,7 @@
 #include "evolve/io/log_compare.hpp"
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -164,4 +164,4 @@ TEST(FullCheck, GenerationsCanBeLimited) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -7,7 +7,7 @@
 #include "tests/replay/replay_fixtures.hpp"
 #include "tests/support/evolve_runs.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -59,4 +59,4 @@ TEST(LiveCheckLive, APhysicsOnlyTheReplaySeesDiverges) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -7,7 +7,7 @@
 
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -141,4 +141,4 @@ TEST(LiveCheck, NothingReceivedIsUnusable) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -7,7 +7,7 @@
 #include "evolve/io/log_compare.hpp"
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -143,4 +143,4 @@ TEST(LiveSim, AnotherSoftwareVersionIsRefusedUnlessForced) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

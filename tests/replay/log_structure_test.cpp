@@ -11,7 +11,7 @@
 #include "replay/check.hpp"
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -295,4 +295,4 @@ TEST(LogStructure, ALogCutInsideAGenerationOfAnUnfinishedRunIsIncompleteInput) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -4,7 +4,7 @@
 
 #include "evolve/messages/build.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 RunConfig unusual() {
@@ -77,4 +77,4 @@ TEST(LoggedConfig, AnotherSoftwareVersionIsRefused) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

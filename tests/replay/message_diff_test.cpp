@@ -5,7 +5,7 @@
 
 #include "evolve/messages/build.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 generation_t some_generation() {
@@ -57,4 +57,4 @@ TEST(MessageDiff, BytesThatDoNotDecodeAreNamed) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 morphology_t sample() {
@@ -100,4 +100,4 @@ TEST(MorphologyCompare, DifferentCountsAreReportedWithoutReadingPastArrays) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

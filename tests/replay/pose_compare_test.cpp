@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 pose_t sample() {
@@ -63,4 +63,4 @@ TEST(PoseCompare, SpheresNeuronsSensorsAndCounts) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 Genome genes(double w) {
@@ -42,4 +42,4 @@ TEST(RecomputeCache, FindsTheSameGenesUnderAnyIdAndTheSameConfigurationOnly) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

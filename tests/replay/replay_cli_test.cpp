@@ -6,7 +6,7 @@
 
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -130,4 +130,4 @@ TEST(ReplayCli, PlayAndSimRunToTheEndOnAnInProcessBus) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

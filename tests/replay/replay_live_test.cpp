@@ -11,7 +11,7 @@
 #include "evolve/io/log_compare.hpp"
 #include "tests/replay/replay_fixtures.hpp"
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
@@ -135,4 +135,4 @@ TEST(ReplayLive, SimPublishesStateThenEveryStep) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay

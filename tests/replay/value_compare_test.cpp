@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-namespace robozoo {
+namespace robozoo::replay {
 namespace {
 
 TEST(ValueError, RelativeAboveOneAbsoluteBelow) {
@@ -75,4 +75,4 @@ TEST(ValueComparer, KeepsTheFirstDetailsAndCountsAll) {
 }
 
 }  // namespace
-}  // namespace robozoo
+}  // namespace robozoo::replay
