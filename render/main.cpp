@@ -26,6 +26,7 @@ extern "C" {
 #include "render/video/video_subject.hpp"
 #include "render/zoo/zoo_sheet.hpp"
 #include "evolve/core/version.hpp"
+#include "util/exit_status.hpp"
 #include "util/stop_signals.hpp"
 
 using namespace robozoo;
@@ -296,7 +297,7 @@ int main(int argc, char** argv) {
 
   // libx264 and the MP4 muxer report every file on stderr; keep errors only.
   av_log_set_level(AV_LOG_ERROR);
-  try {
+  return robozoo::exit_status_of("robozoo-render", [&] {
     try {
       app.set_version_flag("--version", robozoo::version_line());
       app.parse(argc, argv);
@@ -307,12 +308,6 @@ int main(int argc, char** argv) {
     if (vc->parsed()) return run_video(video);
     if (lc->parsed()) return run_live_command(live_args);
     if (bc->parsed()) return run_bench_command(bench);
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "robozoo-render: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "robozoo-render: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
-#include <cstring>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -26,6 +25,7 @@
 #include "runlog/player.hpp"
 #include "evolve/core/version.hpp"
 #include "runlog/progress_bar.hpp"
+#include "util/exit_status.hpp"
 
 namespace {
 
@@ -71,10 +71,26 @@ int run_live_check(const CheckArgs& a) {
 }
 
 /// --full: the re-run, on local workers or (session) on the ranks of an MPI job.
+
+/// A bar on the terminal unless --quiet or --no-progress; --progress asks for it anywhere.
+bool progress_bar_wanted(const CheckArgs& a) {
+  return !a.quiet && !a.no_progress && (a.progress || ::isatty(STDERR_FILENO));
+}
+
+/// Prints a check's report (JSON with --json, else `text` unless --quiet); returns its exit code.
+template <class Report>
+int print_report(const CheckArgs& a, const Report& report, const std::string& text) {
+  if (a.json)
+    std::cout << to_json(report).dump(2) << "\n";
+  else if (!a.quiet)
+    std::cout << text;
+  return report.exit_code();
+}
+
 int run_full_check(const CheckArgs& a, const MpiSession* session) {
   FullCheckOptions o = a.full_options;
   o.force = a.options.force;
-  const bool bar_on = !a.quiet && !a.no_progress && (a.progress || ::isatty(STDERR_FILENO));
+  const bool bar_on = progress_bar_wanted(a);
   ProgressBar bar(std::cerr, "re-running");
   FullCheckProgress progress = [&](int done, int total, double elapsed) {
     if (bar_on)
@@ -106,11 +122,7 @@ int run_full_check(const CheckArgs& a, const MpiSession* session) {
               << " (this costs one evolution)\n";
   const FullCheckReport report = full_check(a.log, make, o, progress);
   bar.finish();
-  if (a.json)
-    std::cout << to_json(report).dump(2) << "\n";
-  else if (!a.quiet)
-    std::cout << format_full_text(report);
-  return report.exit_code();
+  return print_report(a, report, format_full_text(report));
 }
 
 struct PlayArgs {
@@ -129,7 +141,7 @@ struct SimArgs {
 
 int run_check(const CheckArgs& a) {
   const CheckOptions& o = a.options;
-  const bool bar_on = !a.quiet && !a.no_progress && (a.progress || ::isatty(STDERR_FILENO));
+  const bool bar_on = progress_bar_wanted(a);
   ProgressBar bar(std::cerr, "checking");
   const auto t0 = std::chrono::steady_clock::now();
   CheckProgress progress;
@@ -140,11 +152,7 @@ int run_check(const CheckArgs& a) {
     };
   const CheckReport report = check_log_file(a.log, o, progress);
   bar.finish();
-  if (a.json)
-    std::cout << to_json(report).dump(2) << "\n";
-  else if (!a.quiet)
-    std::cout << format_text(report);
-  return report.exit_code();
+  return print_report(a, report, format_text(report));
 }
 
 /// Reads a log for play or sim; prints its damage as warnings.
@@ -169,7 +177,7 @@ int run_play(const PlayArgs& a) {
   LogIndex index;
   if (!load(a.log, a.quiet, scanned, index)) return 2;
   const PlayOptions& o = a.options;
-  try {
+  return exit_status_of("robozoo-replay", [&] {
     plan_pass(scanned.contents, index, o);  // bad options are reported before the bus starts
     Bus bus(a.lcm_url);
     SteadyPlayClock clock;
@@ -186,20 +194,14 @@ int run_play(const PlayArgs& a) {
       return 1;
     }
     return 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "robozoo-replay: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "robozoo-replay: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }
 
 int run_sim(const SimArgs& a) {
   ScannedLog scanned;
   LogIndex index;
   if (!load(a.log, a.quiet, scanned, index)) return 2;
-  try {
+  return exit_status_of("robozoo-replay", [&] {
     Bus bus(a.lcm_url);
     SteadyPlayClock clock;
     const LiveSimStats s =
@@ -211,27 +213,14 @@ int run_sim(const SimArgs& a) {
                 << ": " << s.steps_run << " steps, d = " << s.d << " m, " << s.poses_sent << " poses sent on "
                 << a.lcm_url << "\n";
     return s.publish_failures ? 1 : 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "robozoo-replay: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "robozoo-replay: " << e.what() << "\n";
-    return 1;
-  }
-}
-
-/// --mpi must be known before parsing: MPI starts first, so that only rank 0 speaks.
-bool wants_mpi(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], "--mpi") == 0) return true;
-  return false;
+  });
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::unique_ptr<MpiSession> session;
-  if (wants_mpi(argc, argv)) {
+  if (robozoo::mpi_requested(argc, argv)) {
     try {
       session = std::make_unique<MpiSession>(&argc, &argv);
     } catch (const std::exception& e) {

@@ -8,6 +8,7 @@
 const fs = require("node:fs/promises");
 const path = require("node:path");
 const { createRequire } = require("node:module");
+const { openReadable } = require("./mcap_readable.cjs");
 
 const USAGE = "usage: node tools/mcap_frame.cjs NODE_MODULES FILE.mcap OUT.svg [--index N] [--topic T]\n" +
   "  draws the N-th message (default -1: the last) of topic T (default /robot/scene) as SVG";
@@ -43,20 +44,11 @@ const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const rgb = (c, k = 1) => `rgb(${[c.r, c.g, c.b].map((v) => Math.round(Math.min(1, v * k) * 255)).join(",")})`;
 
 async function main() {
-  const handle = await fs.open(file, "r");
-  const size = BigInt((await handle.stat()).size);
-  const readable = {
-    size: async () => size,
-    read: async (offset, length) => {
-      const buf = Buffer.alloc(Number(length));
-      await handle.read(buf, 0, Number(length), Number(offset));
-      return new Uint8Array(buf.buffer, buf.byteOffset, buf.byteLength);
-    },
-  };
+  const readable = await openReadable(file);
   const reader = await McapIndexedReader.Initialize({ readable, decompressHandlers: await loadDecompressHandlers() });
   const scenes = [];
   for await (const m of reader.readMessages({ topics: [topic] })) scenes.push(m);
-  await handle.close();
+  await readable.close();
   if (scenes.length === 0) throw new Error(`no messages on ${topic}`);
   const m = scenes[index < 0 ? scenes.length + index : index];
   if (!m) throw new Error(`no message ${index} on ${topic} (it has ${scenes.length})`);

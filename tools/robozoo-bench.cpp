@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/config/run_config.hpp"
+#include "evolve/core/cpu_time.hpp"
 #include "evolve/cppn/network.hpp"
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/growth/growth.hpp"
@@ -38,11 +39,7 @@ namespace {
 /// the time other processes hold the core.
 struct Clock {
   using time_point = double;
-  static double now() {
-    timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-  }
+  static double now() { return thread_cpu_seconds(); }
 };
 
 double since(double t0) { return Clock::now() - t0; }

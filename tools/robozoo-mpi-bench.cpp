@@ -33,6 +33,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/config/run_config.hpp"
+#include "evolve/core/cpu_time.hpp"
 #include "evolve/core/rng.hpp"
 #include "evolve/parallel/mpi/mpi_session.hpp"
 #include "evolve/parallel/mpi/mpi_transport.hpp"
@@ -73,14 +74,6 @@ struct Options {
   bool force_version = false;
 };
 
-/// CPU time of the calling thread: rank 0's main thread, which hands out and
-/// collects every job (not the checkpoint thread, nor MPI's helper threads).
-double thread_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
 struct JobRecord {
   double seconds = 0.0;  // as rank 0 saw it: hand-out to result
   double bytes_out = 0.0, bytes_in = 0.0;
@@ -105,6 +98,8 @@ class RecordingEvaluator : public Evaluator {
     const MpiTransportStats& s = transport_.stats();
     const size_t k0 = s.timings.size();
     const uint64_t m0 = s.messages_sent + s.messages_received, b0 = s.bytes_sent + s.bytes_received;
+    // CPU time of rank 0's main thread, which hands out and collects every job
+    // (not the checkpoint thread, nor MPI's helper threads).
     const double cpu0 = thread_cpu_seconds();
     const auto t0 = Clock::now();
     std::vector<EvalSummary> results = inner_.evaluate(genomes);

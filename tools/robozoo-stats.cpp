@@ -12,6 +12,7 @@
 
 #include "study/analysis/stats_job.hpp"
 #include "evolve/core/version.hpp"
+#include "util/exit_status.hpp"
 #include "study/experiment/trial_plan.hpp"
 
 using namespace robozoo;
@@ -76,22 +77,16 @@ int main(int argc, char** argv) {
   o.zoo = !no_zoo;
   o.analysis.changes.simulated_only = !all_changes;
   if (!export_dir.empty()) {
-    try {
+    return exit_status_of("robozoo-stats", [&] {
       std::vector<std::string> skipped;
       const auto written = export_results(o.log_dir, export_dir, o.include_unfinished, std::cerr, skipped);
       std::cerr << "robozoo-stats: wrote " << written.size() << " compact results into " << export_dir;
       if (!skipped.empty()) std::cerr << "; " << skipped.size() << " logs left out";
       std::cerr << "\n";
       return written.empty() ? 1 : 0;
-    } catch (const std::invalid_argument& e) {
-      std::cerr << "robozoo-stats: " << e.what() << "\n";
-      return 2;
-    } catch (const std::exception& e) {
-      std::cerr << "robozoo-stats: " << e.what() << "\n";
-      return 1;
-    }
+    });
   }
-  try {
+  return exit_status_of("robozoo-stats", [&] {
     std::cerr << "robozoo-stats: reading " << o.log_dir << "\n";
     const StatsOutcome r = run_stats(o, std::cerr);
     std::cerr << "robozoo-stats: " << r.analysis.control.size() << " " << arm_title(r.analysis.control_arm)
@@ -101,11 +96,5 @@ int main(int argc, char** argv) {
     for (const auto& f : r.files) std::cerr << " " << f;
     std::cerr << "\n  in " << r.out_dir << "\n";
     return 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "robozoo-stats: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "robozoo-stats: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -20,6 +20,7 @@ PACKAGES=(
   libgtest-dev gnuplot-nox
   openmpi-bin libopenmpi-dev
   iproute2 util-linux
+  zlib1g-dev                 # CRC-32 (worker frames, MCAP)
   libzstd-dev liblz4-dev graphviz nodejs npm   # robozoo-log export (MCAP) and cppn; the MCAP check's node
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizer runtimes (tools/fuzz.sh)
   clang-format               # tools/format.sh (clang-format 14)

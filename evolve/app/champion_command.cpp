@@ -4,6 +4,7 @@
 
 #include "study/analysis/champion_log.hpp"
 #include "evolve/messages/build.hpp"
+#include "util/exit_status.hpp"
 
 namespace robozoo {
 
@@ -29,19 +30,13 @@ int run_champion_command(const ChampionOptions& o) {
               << "; use that version, or --force (the champion must still evaluate to its committed fitness)\n";
     return 2;
   }
-  try {
+  return exit_status_of("robozoo-evolve champion", [&] {
     const ChampionLogInfo info = write_champion_log(r, o.log_path);
     std::cerr << "robozoo-evolve champion: genome " << info.genome_id << " (best of run " << r.run.run_id
               << ", generation " << info.generation << ", fitness " << info.fitness << "): " << info.poses
               << " poses in " << o.log_path << "\n";
     return 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "robozoo-evolve champion: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "robozoo-evolve champion: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }
 
 }  // namespace robozoo

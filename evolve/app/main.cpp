@@ -6,7 +6,6 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -20,19 +19,10 @@
 #include "evolve/parallel/mpi/mpi_session.hpp"
 #include "evolve/core/version.hpp"
 
-namespace {
-/// --mpi must be known before parsing: MPI starts first, so that only rank 0 speaks.
-bool wants_mpi(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], "--mpi") == 0) return true;
-  return false;
-}
-}  // namespace
-
 int main(int argc, char** argv) {
   std::unique_ptr<robozoo::MpiSession> session;
   std::unique_ptr<robozoo::StopWatcher> watcher;  // destroyed before the session
-  if (wants_mpi(argc, argv)) {
+  if (robozoo::mpi_requested(argc, argv)) {
     try {
       robozoo::block_stop_signals();  // before MPI starts its threads: they inherit the mask
       session = std::make_unique<robozoo::MpiSession>(&argc, &argv);

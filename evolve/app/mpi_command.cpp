@@ -76,9 +76,7 @@ int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& ses
       std::cerr << "robozoo-evolve: " << e.what() << also << "; " << intact(*evo, opts) << std::endl;
       session.abort(1);  // a rank may be hung in a job: end every rank now
     }
-    if (!o.quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";
-    if (!o.quiet || opts.resume) std::cerr << session_line(*evo) << "\n";
-    if (!opts.lcm_url.empty()) std::cerr << bus_line(*evo) << "\n";
+    print_run_end(*evo, opts, o.quiet);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "robozoo-evolve: " << e.what() << "\n";

@@ -122,6 +122,12 @@ std::string bus_line(const Evolution& evo) {
          std::to_string(evo.publish_failures()) + " publish failures";
 }
 
+void print_run_end(const Evolution& evo, const EvolveOptions& opts, bool quiet) {
+  if (!quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";
+  if (!quiet || opts.resume) std::cerr << session_line(evo) << "\n";
+  if (!opts.lcm_url.empty()) std::cerr << bus_line(evo) << "\n";
+}
+
 std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConfig& config, EvolveOptions& opts) {
   try {
     config = o.preset.empty() ? RunConfig{} : preset_config(o.preset);
@@ -213,10 +219,7 @@ int run_run_command(const CLI::App& app, const RunOptions& o) {
     evo->run([&](const ProgressReport& r) {
       if (!o.quiet) std::cerr << format_progress(r) << std::endl;
     });
-    if (!o.quiet) std::cerr << "robozoo-evolve: done, log " << opts.log_path << "\n";
-    if (!o.quiet || opts.resume) std::cerr << session_line(*evo) << "\n";
-    // Said even with --quiet: a live run's subscribers need to know what was lost at the source.
-    if (!opts.lcm_url.empty()) std::cerr << bus_line(*evo) << "\n";
+    print_run_end(*evo, opts, o.quiet);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "robozoo-evolve: " << e.what() << "\n";

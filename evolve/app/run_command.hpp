@@ -61,5 +61,9 @@ std::string resume_line(const Evolution& evo, const EvolveOptions& opts);
 std::string session_line(const Evolution& evo);
 /// "bus: N messages published, F publish failures"; empty for a run that does not publish.
 std::string bus_line(const Evolution& evo);
+/// The lines printed to stderr when a run has ended: the log ("done"), the
+/// session line (unless --quiet, but always after --resume) and the bus line
+/// (even with --quiet: a live run's subscribers need to know what was lost at the source).
+void print_run_end(const Evolution& evo, const EvolveOptions& opts, bool quiet);
 
 }  // namespace robozoo

@@ -9,16 +9,11 @@
 #include <unordered_map>
 
 #include "evolve/cppn/activation_libm.hpp"
+#include "evolve/core/cpu_time.hpp"
 
 namespace robozoo {
 
 namespace {
-
-double thread_cpu_seconds() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 /// Marks the points where rows a and b differ bitwise (+0.0 and -0.0 differ, a
 /// NaN equals its own bits) in `point_changed`; returns whether any point differs.

@@ -9,17 +9,6 @@ namespace {
 
 constexpr uint8_t kMagic[4] = {0x52, 0x5A, 0x57, 0x50};  // "RZWP"
 
-constexpr std::array<uint32_t, 256> make_crc_table() {
-  std::array<uint32_t, 256> table{};
-  for (uint32_t i = 0; i < 256; ++i) {
-    uint32_t c = i;
-    for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-    table[i] = c;
-  }
-  return table;
-}
-constexpr std::array<uint32_t, 256> kCrcTable = make_crc_table();
-
 void put_u32(uint8_t* p, uint32_t v) {
   for (int i = 0; i < 4; ++i) p[i] = static_cast<uint8_t>(v >> (8 * i));
 }
@@ -73,12 +62,6 @@ uint32_t check_header(const uint8_t* h, uint32_t max_body_bytes) {
 }
 
 }  // namespace
-
-uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc) {
-  crc = ~crc;
-  for (size_t i = 0; i < size; ++i) crc = kCrcTable[(crc ^ data[i]) & 0xFFu] ^ (crc >> 8);
-  return ~crc;
-}
 
 Bytes encode_frame(const Frame& frame) {
   if (!known_kind(static_cast<uint8_t>(frame.kind)))

@@ -26,6 +26,8 @@
 // Encoding and decoding are pure functions; FrameReader adds the buffering needed
 // to cut frames out of a byte stream (pipes, sockets). A message-based transport
 // (MPI) sends one encoded frame per message and decodes it with decode_message.
+#include "evolve/io/crc32.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -75,9 +77,6 @@ struct Result {
   Bytes payload;       ///< the work function's output when ok
   std::string error;   ///< why it failed when !ok
 };
-
-/// CRC-32 (IEEE, reflected, poly 0xEDB88320, init and final xor 0xFFFFFFFF).
-uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc = 0);
 
 /// Encodes a frame; throws std::invalid_argument if the body exceeds 4 GiB - 1 or
 /// a Shutdown frame has a body.

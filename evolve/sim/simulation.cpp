@@ -10,6 +10,7 @@
 #include "evolve/sim/contacts.hpp"
 #include "evolve/sim/ctrnn.hpp"
 #include "evolve/sim/params_check.hpp"
+#include "evolve/core/cpu_time.hpp"
 #include "evolve/sim/robot_check.hpp"
 #include "evolve/sim/episode_rules.hpp"
 #include "evolve/sim/sensors.hpp"
@@ -18,12 +19,6 @@
 
 namespace robozoo {
 namespace {
-
-double thread_cpu_seconds() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 Eigen::Vector3d vec(const dReal* p) { return {p[0], p[1], p[2]}; }
 

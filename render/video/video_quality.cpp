@@ -1,8 +1,9 @@
 #include "render/video/video_quality.hpp"
 
+#include "render/video/video_decoder.hpp"
+
 extern "C" {
 #include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
 #include <libswscale/swscale.h>
 }
 
@@ -74,31 +75,15 @@ double psnr_of(double squared, double samples) {
 VideoQuality measure_quality(const std::string& path, const std::vector<Image>& sources) {
   if (sources.empty()) throw std::invalid_argument("measure_quality: no source frames");
   const int w = sources.front().width(), h = sources.front().height();
-  AVFormatContext* fmt = nullptr;
-  if (avformat_open_input(&fmt, path.c_str(), nullptr, nullptr) < 0) throw std::runtime_error(path + ": cannot open");
-  AVCodecContext* dec = nullptr;
-  AVPacket* pkt = av_packet_alloc();
-  AVFrame* frame = av_frame_alloc();
+  VideoDecoder video(path);
   AVFrame* source = av_frame_alloc();
   SwsContext* sws = nullptr;
   std::unique_ptr<void, std::function<void(void*)>> cleanup(reinterpret_cast<void*>(1), [&](void*) {
     sws_freeContext(sws);
     av_frame_free(&source);
-    av_frame_free(&frame);
-    av_packet_free(&pkt);
-    avcodec_free_context(&dec);
-    avformat_close_input(&fmt);
   });
-  if (avformat_find_stream_info(fmt, nullptr) < 0 || fmt->nb_streams != 1)
-    throw std::runtime_error(path + ": not a video of one stream");
-  const AVStream* st = fmt->streams[0];
-  const AVCodec* codec = avcodec_find_decoder(st->codecpar->codec_id);
-  if (!codec) throw std::runtime_error(path + ": no decoder");
-  dec = avcodec_alloc_context3(codec);
-  avcodec_parameters_to_context(dec, st->codecpar);
-  dec->thread_count = 1;
-  if (avcodec_open2(dec, codec, nullptr) < 0) throw std::runtime_error(path + ": cannot open the decoder");
-  if (dec->width != w || dec->height != h || dec->pix_fmt != AV_PIX_FMT_YUV420P)
+  if (!source) throw std::runtime_error("libav: out of memory");
+  if (video.width() != w || video.height() != h || video.pix_fmt_id() != AV_PIX_FMT_YUV420P)
     throw std::runtime_error(path + ": not yuv420p of the sources' size");
   // The source frames as VideoEncoder converts them.
   sws = sws_getContext(w, h, AV_PIX_FMT_RGB24, w, h, AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT,
@@ -114,15 +99,14 @@ VideoQuality measure_quality(const std::string& path, const std::vector<Image>& 
   VideoQuality q;
   double se[3] = {0, 0, 0}, ssim = 0;
   long windows = 0;
-  auto take = [&] {
-    while (avcodec_receive_frame(dec, frame) == 0) {
+  video.decode([&](const AVFrame& frame) {
       const Image& img = sources[static_cast<size_t>(q.frames) % sources.size()];
       const uint8_t* src[1] = {img.bytes().data()};
       const int stride[1] = {3 * w};
       sws_scale(sws, src, stride, 0, h, source->data, source->linesize);
       for (int p = 0; p < 3; ++p) {
         const int pw = p == 0 ? w : w / 2, ph = p == 0 ? h : h / 2;
-        const Plane a = copy_plane(frame->data[p], frame->linesize[p], pw, ph);
+        const Plane a = copy_plane(frame.data[p], frame.linesize[p], pw, ph);
         const Plane b = copy_plane(source->data[p], source->linesize[p], pw, ph);
         se[p] += squared_error(a, b);
         if (p == 0) {
@@ -132,15 +116,7 @@ VideoQuality measure_quality(const std::string& path, const std::vector<Image>& 
         }
       }
       ++q.frames;
-    }
-  };
-  while (av_read_frame(fmt, pkt) >= 0) {
-    avcodec_send_packet(dec, pkt);
-    av_packet_unref(pkt);
-    take();
-  }
-  avcodec_send_packet(dec, nullptr);
-  take();
+  });
   if (q.frames == 0) throw std::runtime_error(path + ": no frame decoded");
   const double luma = static_cast<double>(w) * h * q.frames, chroma = luma / 4;
   q.psnr_y = psnr_of(se[0], luma);

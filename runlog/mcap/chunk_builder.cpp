@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "runlog/mcap/crc32.hpp"
+#include "evolve/io/crc32.hpp"
 
 namespace robozoo::mcap {
 
@@ -24,7 +24,7 @@ Chunk ChunkBuilder::finish(Compression c, std::map<uint16_t, MessageIndex>& inde
   chunk.message_start_time = start_;
   chunk.message_end_time = end_;
   chunk.uncompressed_size = records_.size();
-  chunk.uncompressed_crc = crc32_update(0, records_.data(), records_.size());
+  chunk.uncompressed_crc = crc32(records_.data(), records_.size(), 0);
   chunk.compression = compression_name(c);
   chunk.records = compress(c, records_);
   indexes = std::move(indexes_);

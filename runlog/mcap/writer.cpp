@@ -4,7 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "runlog/mcap/crc32.hpp"
+#include "evolve/io/crc32.hpp"
 
 namespace robozoo::mcap {
 
@@ -28,7 +28,7 @@ void Writer::emit(const Bytes& bytes) {
   if (bytes.empty()) return;
   if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
     throw std::runtime_error(partial_ + ": write failed: " + std::strerror(errno));
-  if (in_data_) data_crc_ = crc32_update(data_crc_, bytes.data(), bytes.size());
+  if (in_data_) data_crc_ = crc32(bytes.data(), bytes.size(), data_crc_);
   offset_ += bytes.size();
 }
 
@@ -110,7 +110,7 @@ void Writer::close() {
   auto group = [&](Opcode op, const Bytes& bytes) {
     if (bytes.empty()) return;
     groups.push_back({op, offset_, bytes.size()});
-    summary_crc = crc32_update(summary_crc, bytes.data(), bytes.size());
+    summary_crc = crc32(bytes.data(), bytes.size(), summary_crc);
     emit(bytes);
   };
   Bytes g;
@@ -131,13 +131,13 @@ void Writer::close() {
   const uint64_t summary_offset_start = offset_;
   Bytes offsets;
   for (const SummaryOffset& so : groups) append(offsets, so);
-  summary_crc = crc32_update(summary_crc, offsets.data(), offsets.size());
+  summary_crc = crc32(offsets.data(), offsets.size(), summary_crc);
   emit(offsets);
 
   // The summary CRC runs on through the footer's opcode, length and two offsets.
   Bytes footer;
   append(footer, Footer{summary_start, summary_offset_start, 0});
-  summary_crc = crc32_update(summary_crc, footer.data(), footer.size() - 4);
+  summary_crc = crc32(footer.data(), footer.size() - 4, summary_crc);
   footer.resize(footer.size() - 4);
   for (size_t i = 0; i < 4; ++i) footer.push_back(static_cast<uint8_t>(summary_crc >> (8 * i)));
   footer.insert(footer.end(), std::begin(kMagic), std::end(kMagic));

@@ -6,21 +6,12 @@
 
 #include "evolve/io/log_compare.hpp"
 #include "tests/replay/replay_fixtures.hpp"
+#include "tests/runlog/fake_clock.hpp"
 
 namespace robozoo::replay {
 namespace {
 
 using namespace robozoo::testing;
-
-struct FakeClock : PlayClock {
-  double t = 50.0;
-  std::vector<double> waits;
-  double now() override { return t; }
-  void sleep_until(double until) override {
-    waits.push_back(until);
-    if (until > t) t = until;
-  }
-};
 
 struct Sent {
   std::string channel;
@@ -40,7 +31,7 @@ struct Fixture {
 TEST(LiveSim, SendsStateThenEveryStepMatchingTheLoggedTrajectoryBitForBit) {
   Fixture f;
   const LoggedGenome& g = f.with_poses();
-  FakeClock clock;
+  FakeClock clock(50.0);
   std::vector<Sent> sent;
   LiveSimOptions o;
   o.genome_id = g.genome_id;
@@ -90,7 +81,7 @@ TEST(LiveSim, SendsStateThenEveryStepMatchingTheLoggedTrajectoryBitForBit) {
 TEST(LiveSim, PoseEveryThinsTheStreamButKeepsFirstAndLast) {
   Fixture f;
   const LoggedGenome& g = f.with_poses();
-  FakeClock clock;
+  FakeClock clock(50.0);
   std::vector<int> steps;
   LiveSimOptions o;
   o.genome_id = g.genome_id;
@@ -107,7 +98,7 @@ TEST(LiveSim, PoseEveryThinsTheStreamButKeepsFirstAndLast) {
 
 TEST(LiveSim, UnknownGenomeListsTheLoggedOnes) {
   Fixture f;
-  FakeClock clock;
+  FakeClock clock(50.0);
   LiveSimOptions o;
   o.genome_id = 987654;
   try {
@@ -129,7 +120,7 @@ TEST(LiveSim, AnotherSoftwareVersionIsRefusedUnlessForced) {
       m.software_version = "0.0.0-old";
       r.data = encode_message(m);
     }
-  FakeClock clock;
+  FakeClock clock(50.0);
   LiveSimOptions o;
   o.genome_id = f.with_poses().genome_id;
   int sent = 0;

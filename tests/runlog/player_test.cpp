@@ -3,20 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "evolve/messages/build.hpp"
+#include "tests/runlog/fake_clock.hpp"
 
 namespace robozoo {
 namespace {
 
-/// A clock that only moves when asked to wait: tests never sleep.
-struct FakeClock : PlayClock {
-  double t = 100.0;
-  std::vector<double> waits;
-  double now() override { return t; }
-  void sleep_until(double until) override {
-    waits.push_back(until);
-    if (until > t) t = until;
-  }
-};
+using testing::FakeClock;
 
 struct Sent {
   std::string channel;
@@ -192,7 +184,7 @@ TEST(Player, StartingMidRunSendsTheStateFromBeforeTheStart) {
 TEST(Player, PlayWaitsOnTheClockAndLoops) {
   SyntheticLog s;
   const LogIndex ix = index_log(s.log);
-  FakeClock clock;
+  FakeClock clock(100.0);
   std::vector<Sent> sent;
   PlayOptions o;
   o.loop = true;
@@ -217,7 +209,7 @@ TEST(Player, PlayWaitsOnTheClockAndLoops) {
 TEST(Player, PublishFailuresAreCounted) {
   SyntheticLog s;
   const LogIndex ix = index_log(s.log);
-  FakeClock clock;
+  FakeClock clock(100.0);
   const PlayStats stats = play(s.log, ix, {}, clock, [](const std::string&, const std::vector<uint8_t>&) { return false; });
   EXPECT_EQ(stats.publish_failures, stats.events_sent);
 }

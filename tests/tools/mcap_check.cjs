@@ -12,6 +12,7 @@
 const fs = require("node:fs/promises");
 const path = require("node:path");
 const { createRequire } = require("node:module");
+const { openReadable } = require("../../tools/mcap_readable.cjs");
 
 const [modules, file, summaryPath] = process.argv.slice(2);
 if (!modules || !file || !summaryPath) {
@@ -35,16 +36,7 @@ function u64(view, at) {
 }
 
 async function main() {
-  const handle = await fs.open(file, "r");
-  const size = BigInt((await handle.stat()).size);
-  const readable = {
-    size: async () => size,
-    read: async (offset, length) => {
-      const buf = Buffer.alloc(Number(length));
-      await handle.read(buf, 0, Number(length), Number(offset));
-      return new Uint8Array(buf.buffer, buf.byteOffset, buf.byteLength);
-    },
-  };
+  const readable = await openReadable(file);
   const decompressHandlers = await loadDecompressHandlers();
   const reader = await McapIndexedReader.Initialize({ readable, decompressHandlers });
 
@@ -129,7 +121,7 @@ async function main() {
   for (const [id, n] of reader.statistics.channelMessageCounts)
     check(Number(n) === counts[reader.channelsById.get(id).topic], "statistics' per-channel count");
 
-  await handle.close();
+  await readable.close();
   console.log(JSON.stringify({ file, chunks: reader.chunkIndexes.length, messages: total, scenes, counts,
                                compression: reader.chunkIndexes[0].compression, failures }));
   process.exit(failures.length === 0 ? 0 : 1);

@@ -20,44 +20,15 @@
 #include "tests/render/fixtures.hpp"
 #include "tests/support/browser.hpp"
 #include "tests/support/evolve_runs.hpp"
+#include "tests/support/private_network.hpp"
 #include "tests/support/subprocess.hpp"
+#include "tests/support/wait_for.hpp"
 
 namespace robozoo::view {
 namespace {
 
 using namespace robozoo::testing;
 using Clock = std::chrono::steady_clock;
-
-bool inside_namespace() { return std::getenv("ROBOZOO_VIEW_NETNS") != nullptr; }
-
-void run_inside(const std::string& test) {
-  char self[4096] = {0};
-  ASSERT_GT(::readlink("/proc/self/exe", self, sizeof self - 1), 0);
-  const robozoo::testing::Outcome o = run_shell("timeout 400 unshare -n sh -c 'ip link set lo up && ROBOZOO_VIEW_NETNS=1 exec " +
-                              std::string(self) + " --gtest_filter=" + test + "'");
-  EXPECT_EQ(o.status, 0) << o.output;
-  EXPECT_NE(o.output.find("[  PASSED  ] 1 test"), std::string::npos) << o.output;
-  std::istringstream lines(o.output);
-  for (std::string line; std::getline(lines, line);)
-    if (!line.empty() && line[0] != '[' && line.rfind("Running main", 0) != 0 && line.rfind("Note:", 0) != 0)
-      std::cout << line << "\n";
-}
-
-#define IN_NAMESPACE()                                                            \
-  if (!inside_namespace()) {                                                      \
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();  \
-    return run_inside(std::string(info->test_suite_name()) + "." + info->name()); \
-  }
-
-template <class Pred>
-bool wait_for(Pred pred, double seconds) {
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  }
-  return pred();
-}
 
 /// Writes the PNG to `path` (and a copy into ROBOZOO_VIEW_SHOTS) and decodes it.
 render::Image keep_png(const std::vector<uint8_t>& png, const std::string& path) {
@@ -85,7 +56,7 @@ Pixels count_colours(const render::Image& img) {
 }
 
 TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
-  IN_NAMESPACE();
+  RUN_IN_PRIVATE_NETWORK(400, false);
   TempDir dir;
   const std::string log = dir / "run.lcmlog", html = dir / "champion.html";
   render::testing::write_small_run(log);
@@ -118,7 +89,7 @@ TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
 }
 
 TEST(ViewShare, ExperimentPageShowsEveryTrialAndFollowsThem) {
-  IN_NAMESPACE();
+  RUN_IN_PRIVATE_NETWORK(400, false);
   TempDir dir;
   const std::string out = dir / "exp";
   auto experiment = [&](int generations) {

@@ -28,7 +28,9 @@
 #include "tests/render/messages.hpp"
 #include "tests/support/browser.hpp"
 #include "tests/support/evolve_runs.hpp"
+#include "tests/support/private_network.hpp"
 #include "tests/support/subprocess.hpp"
+#include "tests/support/wait_for.hpp"
 
 namespace robozoo::view {
 namespace {
@@ -38,41 +40,6 @@ using Clock = std::chrono::steady_clock;
 
 const std::string kUrl = "udpm://239.255.76.67:7667?ttl=0";
 const std::string kPage = "http://127.0.0.1:8080/";
-
-bool inside_namespace() { return std::getenv("ROBOZOO_VIEW_NETNS") != nullptr; }
-
-/// Runs the current test again in a private network namespace; its output
-/// comes back in the failure message.
-void run_inside(const std::string& test) {
-  char self[4096] = {0};
-  ASSERT_GT(::readlink("/proc/self/exe", self, sizeof self - 1), 0);
-  const robozoo::testing::Outcome o = run_shell("timeout 240 unshare -n sh -c 'ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
-                              "ROBOZOO_VIEW_NETNS=1 exec " + std::string(self) + " --gtest_filter=" + test + "'");
-  EXPECT_EQ(o.status, 0) << o.output;
-  EXPECT_NE(o.output.find("[  PASSED  ] 1 test"), std::string::npos) << o.output;
-  // What the test printed itself (figures), without GoogleTest's lines.
-  std::istringstream lines(o.output);
-  for (std::string line; std::getline(lines, line);)
-    if (!line.empty() && line[0] != '[' && line.rfind("Running main", 0) != 0 && line.rfind("Note:", 0) != 0)
-      std::cout << line << "\n";
-}
-
-#define IN_NAMESPACE()                                                                       \
-  if (!inside_namespace()) {                                                                 \
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();             \
-    return run_inside(std::string(info->test_suite_name()) + "." + info->name());            \
-  }
-
-/// Waits until `pred()` or `seconds`; false on timeout.
-template <class Pred>
-bool wait_for(Pred pred, double seconds) {
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  return pred();
-}
 
 pid_t start_view(const TempDir& dir, std::vector<std::string> extra = {}) {
   std::vector<std::string> a = {bin("robozoo-view"), "--lcm-url", kUrl, "--port", "8080"};
@@ -171,7 +138,7 @@ bool page_connected(HeadlessBrowser& browser, const std::string& session) {
 }
 
 TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
-  IN_NAMESPACE();
+  RUN_IN_PRIVATE_NETWORK(240, true);
   TempDir dir;
   const pid_t view = start_view(dir);
   HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
@@ -307,7 +274,7 @@ class StuckPage {
 };
 
 TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
-  IN_NAMESPACE();
+  RUN_IN_PRIVATE_NETWORK(240, true);
   TempDir dir;
   constexpr int kQueuePoses = 20;
   const pid_t view = start_view(dir, {"--queue-poses", std::to_string(kQueuePoses), "--idle-exit", "4"});
@@ -428,7 +395,7 @@ double page_frame_rate(HeadlessBrowser& browser, const std::string& session, dou
 }
 
 TEST(ViewBrowser, FrameRateOfAFiftySphereRobot) {
-  IN_NAMESPACE();
+  RUN_IN_PRIVATE_NETWORK(240, true);
   TempDir dir;
   // ROBOZOO_VIEW_FPS_LOG and ROBOZOO_VIEW_FPS_GENERATION measure a real log instead (the figure in docs/performance.md).
   const char* real = std::getenv("ROBOZOO_VIEW_FPS_LOG");
@@ -484,7 +451,7 @@ double cpu_seconds(pid_t pid) {
 }
 
 TEST(ViewBrowser, LatencyAndServerCpuWhileEvolvePublishes) {
-  IN_NAMESPACE();
+  RUN_IN_PRIVATE_NETWORK(240, true);
   TempDir dir;
   const pid_t view = start_view(dir);
   HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");

@@ -19,6 +19,7 @@
 #include "tests/render/messages.hpp"
 #include "tests/support/browser.hpp"
 #include "tests/support/subprocess.hpp"
+#include "tests/support/wait_for.hpp"
 
 namespace robozoo::view {
 namespace {
@@ -31,16 +32,6 @@ constexpr int kSpheres = 12, kNeurons = 3, kSensors = 91;
 constexpr int kSteps = 300, kPoseEvery = 4;  // 3 s of 0.01 s steps, a sample every 0.04 s
 constexpr int kCppnNodes = 22, kCppnLinks = 14, kCppnRecurrent = 5, kCppnDisabled = 1;
 const int64_t kChampions[3] = {101, 102, 103};
-
-template <class Pred>
-bool wait_for(Pred pred, double seconds) {
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  return pred();
-}
 
 void sleep_ms(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
 

@@ -1,6 +1,7 @@
 #include "evolve/parallel/mpi/mpi_session.hpp"
 
 #include <cstdlib>
+#include <cstring>
 
 #include "evolve/parallel/mpi/mpi_error.hpp"
 
@@ -42,6 +43,12 @@ std::string MpiSession::host() const {
 void MpiSession::abort(int code) const {
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);  // MPI_Abort does not return; should it, leave anyway
+}
+
+bool mpi_requested(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--mpi") == 0) return true;
+  return false;
 }
 
 }  // namespace robozoo

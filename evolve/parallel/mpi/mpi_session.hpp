@@ -30,4 +30,8 @@ class MpiSession {
   int size_ = 1;
 };
 
+/// Whether the command line asks for MPI (`--mpi` anywhere). A program must know
+/// before it parses its options: MPI starts first, so that only rank 0 speaks.
+bool mpi_requested(int argc, char** argv);
+
 }  // namespace robozoo

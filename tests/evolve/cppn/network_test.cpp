@@ -9,18 +9,10 @@
 #include "evolve/neat/random_genome.hpp"
 
 #include <cstring>
+#include "tests/evolve/neat/tiny_genome.hpp"
 
 namespace robozoo {
 namespace {
-
-// XOR-sized layout: inputs 0, 1 and bias 2; output 3; hidden from 4.
-GenomeLayout small_layout() {
-  GenomeLayout l;
-  l.num_inputs = 3;
-  l.bias_input = 2;
-  l.num_outputs = 1;
-  return l;
-}
 
 Genome base(const GenomeLayout& l) {
   Genome g;
@@ -35,7 +27,7 @@ Genome base(const GenomeLayout& l) {
 double ssig(double x) { return 2.0 / (1.0 + std::exp(-x)) - 1.0; }
 
 TEST(Network, DirectLinksAreOneSignedSigmoid) {
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Genome g = base(l);
   g.links = {{0, 0, 3, 0.5, true, 0}, {1, 1, 3, -1.5, true, 0}, {2, 2, 3, 2.0, true, 0}};
   Network net(g, l);
@@ -45,13 +37,13 @@ TEST(Network, DirectLinksAreOneSignedSigmoid) {
 }
 
 TEST(Network, OutputWithoutLinksIsActivationOfZero) {
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Network net(base(l), l);
   EXPECT_EQ(net.query({1, 2, 3})[0], 0.0);
 }
 
 TEST(Network, DisabledLinksAreIgnored) {
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Genome g = base(l);
   g.links = {{0, 0, 3, 0.5, false, 0}};
   Network net(g, l);
@@ -89,7 +81,7 @@ double feed_forward_chain(const Genome& g, const GenomeLayout& l, int hidden, co
 }
 
 TEST(Network, TenUpdatesEqualFeedForwardPassUpToDepthTen) {
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Rng rng(3);
   for (int hidden = 0; hidden <= 9; ++hidden) {  // depth = hidden + 1 <= 10
     const Genome g = chain(l, hidden, rng);
@@ -108,7 +100,7 @@ TEST(Network, TenUpdatesEqualFeedForwardPassUpToDepthTen) {
 }
 
 TEST(Network, DeeperThanTenUpdatesIsNotAFullPass) {
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Rng rng(4);
   const Genome g = chain(l, 12, rng);  // depth 13 > 10
   Network net(g, l);
@@ -125,7 +117,7 @@ TEST(Network, DeeperThanTenUpdatesIsNotAFullPass) {
 
 TEST(Network, RecurrentSelfLoopByHand) {
   // input0 -(w=1)-> h, h -(s=0.5)-> h, h -(v=2)-> output, h linear... use signed sigmoid.
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Genome g = base(l);
   const int h = l.first_hidden();
   g.nodes.push_back({h, NodeKind::Hidden, Activation::SignedSigmoid});
@@ -147,7 +139,7 @@ TEST(Network, RecurrentSelfLoopByHand) {
 }
 
 TEST(Network, RejectsBadGenomes) {
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Genome g = base(l);
   g.links = {{0, 0, 9, 1.0, true, 0}};
   EXPECT_THROW(Network(g, l), std::invalid_argument);
@@ -161,7 +153,7 @@ TEST(Network, RejectsBadGenomes) {
 }
 
 TEST(Genome, CycleDetection) {
-  const auto l = small_layout();
+  const auto l = test::tiny_layout();
   Genome g = base(l);
   const int h = l.first_hidden();
   g.nodes.push_back({h, NodeKind::Hidden, Activation::Gaussian});

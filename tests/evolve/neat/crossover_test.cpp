@@ -7,15 +7,6 @@
 namespace robozoo {
 namespace {
 
-// XOR-sized layout: inputs 0, 1, bias 2; output 3; hidden from 4.
-GenomeLayout small_layout() {
-  GenomeLayout l;
-  l.num_inputs = 3;
-  l.bias_input = 2;
-  l.num_outputs = 1;
-  return l;
-}
-
 Genome base(int64_t id) { return test::tiny_genome(id, Activation::SignedSigmoid); }
 
 // a: 0->3 (0), 1->3 (1), 2->3 (2, disabled), 0->4 (3), 4->3 (4); hidden 4.
@@ -48,12 +39,12 @@ TEST(Crossover, ChildHasTheFitterParentsStructure) {
     const Genome c1 = crossover(a, 2.0, b, 1.0, rng);
     EXPECT_EQ(c1.nodes, a.nodes);
     EXPECT_EQ(innovations(c1), innovations(a)) << "disjoint/excess genes of b must not appear";
-    validate_genome(c1, small_layout());
+    validate_genome(c1, test::tiny_layout());
     EXPECT_EQ(c1.id, -1);
     const Genome c2 = crossover(a, 1.0, b, 2.0, rng);
     EXPECT_EQ(c2.nodes, b.nodes);
     EXPECT_EQ(innovations(c2), innovations(b)) << "disjoint/excess genes of a must not appear";
-    validate_genome(c2, small_layout());
+    validate_genome(c2, test::tiny_layout());
     const Genome c3 = crossover(a, 1.0, b, 1.0, rng);
     EXPECT_EQ(innovations(c3), innovations(a)) << "equal fitness: the first parent's structure";
   }

@@ -8,17 +8,10 @@
 
 #include "evolve/neat/initial_genome.hpp"
 #include "tests/evolve/neat/classic_params.hpp"
+#include "tests/evolve/neat/tiny_genome.hpp"
 
 namespace robozoo {
 namespace {
-
-GenomeLayout small_layout() {
-  GenomeLayout l;
-  l.num_inputs = 3;
-  l.bias_input = 2;
-  l.num_outputs = 2;
-  return l;
-}
 
 // The genome with every link gene enabled: acyclic iff the graph of all genes is.
 Genome all_enabled(Genome g) {
@@ -45,7 +38,7 @@ void grow(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams
 }
 
 TEST(MutateAddLink, FeedForwardNeverClosesACycle) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(1);
   int total_added = 0;
@@ -68,7 +61,7 @@ TEST(MutateAddLink, FeedForwardNeverClosesACycle) {
 }
 
 TEST(MutateAddLink, RecurrentRegimeMakesCyclesAndSelfLoops) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(2);
   int cyclic = 0, self_loops = 0;
@@ -85,7 +78,7 @@ TEST(MutateAddLink, RecurrentRegimeMakesCyclesAndSelfLoops) {
 }
 
 TEST(MutateAddLink, NewLinkIsNewBornAndRegistered) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(3);
   Genome g = initial_genome(layout, 0, p, Regime::FeedForward, rng);
@@ -112,7 +105,7 @@ TEST(MutateAddLink, NewLinkIsNewBornAndRegistered) {
 }
 
 TEST(MutateAddLink, FailsWhenNoLegalLinkExists) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(4);
   Genome g = initial_genome(layout, 0, p, Regime::FeedForward, rng);
@@ -126,7 +119,7 @@ TEST(MutateAddLink, FailsWhenNoLegalLinkExists) {
 }
 
 TEST(MutateAddNode, SplitsAnEnabledLink) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   p.hidden_activations = 1u << static_cast<int>(Activation::Gaussian);
   Rng rng(5);
@@ -163,7 +156,7 @@ TEST(MutateAddNode, SplitsAnEnabledLink) {
 }
 
 TEST(MutateAddNode, SameSplitInOneGenerationSharesNodeAndInnovations) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(6);
   InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
@@ -197,7 +190,7 @@ TEST(MutateAddNode, SameSplitInOneGenerationSharesNodeAndInnovations) {
 }
 
 TEST(MutateAddNode, ActivationsComeFromTheMask) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();  // signed sigmoid, signed cosine, Gaussian
   Rng rng(7);
   std::set<Activation> got;
@@ -216,7 +209,7 @@ TEST(MutateAddNode, ActivationsComeFromTheMask) {
 }
 
 TEST(MutateAddNode, FailsWithoutEnabledLinks) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(8);
   Genome g = initial_genome(layout, 0, p, Regime::FeedForward, rng);
@@ -227,7 +220,7 @@ TEST(MutateAddNode, FailsWithoutEnabledLinks) {
 }
 
 TEST(MutateWeights, YoungLinksAlwaysOldOnesSometimes) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(9);
   // Young: generation - born < 18, always perturbed.
@@ -255,7 +248,7 @@ TEST(MutateWeights, YoungLinksAlwaysOldOnesSometimes) {
 }
 
 TEST(MutateWeights, ClampsToTheLimit) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   Rng rng(10);
   Genome g = initial_genome(layout, 0, p, Regime::FeedForward, rng);
@@ -271,7 +264,7 @@ TEST(MutateWeights, ClampsToTheLimit) {
 }
 
 TEST(Mutate, AtMostOneStructuralChangeAndWeightsOnlyWithoutOne) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p = classic_neat();
   p.add_node_probability = 0.5;
   p.add_link_probability = 0.5;
@@ -322,7 +315,7 @@ double chi_square(const std::map<std::pair<int, int>, int>& counts, int draws) {
 }
 
 std::map<std::pair<int, int>, int> add_link_choices(Regime regime, int draws, uint64_t seed) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   const NeatParams p;  // HyperNEAT: uniform add-link, positions, no self-loops
   Rng rng(seed);
   std::map<std::pair<int, int>, int> counts;
@@ -384,7 +377,7 @@ TEST(MutateAddLinkUniform, FailsOnlyWhenNoPairIsLeft) {
 }
 
 TEST(MutateAddNodeHyperNeat, KeepsTheLinkAtHalfWeightAndAddsOneAndAQuarter) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   NeatParams p;
   ASSERT_EQ(p.add_node, AddNodeRule::HyperNeat);
   Rng rng(24);
@@ -410,7 +403,7 @@ TEST(MutateAddNodeHyperNeat, KeepsTheLinkAtHalfWeightAndAddsOneAndAQuarter) {
 }
 
 TEST(MutateAddNodeHyperNeat, SplitsForwardLinksOnly) {
-  const GenomeLayout layout = small_layout();
+  const GenomeLayout layout = test::tiny_layout(2);
   const NeatParams p;
   Rng rng(25);
   // Only recurrent links: 3 -> 4 (1 -> 1), 4 -> 3, 3 -> 5 (1 -> 0.5), and a disabled forward one.

@@ -17,4 +17,14 @@ inline Genome tiny_genome(int64_t id, Activation output = Activation::SignedSigm
   return g;
 }
 
+/// The layout of tiny_genome (XOR-sized): inputs 0 and 1, the bias 2, `outputs`
+/// outputs from 3, hidden nodes after them.
+inline GenomeLayout tiny_layout(int outputs = 1) {
+  GenomeLayout l;
+  l.num_inputs = 3;
+  l.bias_input = 2;
+  l.num_outputs = outputs;
+  return l;
+}
+
 }  // namespace robozoo::test

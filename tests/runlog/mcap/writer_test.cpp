@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "runlog/mcap/crc32.hpp"
+#include "evolve/io/crc32.hpp"
 
 namespace robozoo::mcap {
 namespace {
@@ -109,7 +109,7 @@ TEST_F(WriterTest, FileReadsBackWithEveryIndexAndCrc) {
     ASSERT_EQ(fc.u(8), 20u);
     const size_t summary_start = fc.u(8), summary_offset_start = fc.u(8);
     const uint32_t summary_crc = fc.u(4);
-    EXPECT_EQ(crc32_update(0, f.data() + summary_start, footer_at + 1 + 8 + 16 - summary_start), summary_crc);
+    EXPECT_EQ(crc32(f.data() + summary_start, footer_at + 1 + 8 + 16 - summary_start), summary_crc);
 
     // Data section: header, schema, channels, chunks with their message indexes, data end.
     const std::vector<Record> data = records_of(f, 8, summary_start);
@@ -118,7 +118,7 @@ TEST_F(WriterTest, FileReadsBackWithEveryIndexAndCrc) {
     const Record& end = data.back();
     ASSERT_EQ(end.op, 0x0F);
     Cursor ec{f, end.content};
-    EXPECT_EQ(ec.u(4), crc32_update(0, f.data(), end.start));
+    EXPECT_EQ(ec.u(4), crc32(f.data(), end.start));
 
     std::map<size_t, Record> by_offset;
     for (const Record& r : data) by_offset[r.start] = r;
@@ -134,7 +134,7 @@ TEST_F(WriterTest, FileReadsBackWithEveryIndexAndCrc) {
       const size_t n = cc.u(8);
       const Bytes packed(f.begin() + cc.at, f.begin() + cc.at + n);
       const Bytes raw = decompress(comp, packed, size);
-      EXPECT_EQ(crc32_update(0, raw.data(), raw.size()), crc);
+      EXPECT_EQ(crc32(raw.data(), raw.size()), crc);
       EXPECT_LE(t0, t1);
       for (const Record& m : records_of(raw, 0, raw.size())) {
         ASSERT_EQ(m.op, 0x05);
