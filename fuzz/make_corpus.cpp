@@ -36,9 +36,7 @@ void write_file(const fs::path& p, const std::string& text) {
   out << text;
   if (!out) throw std::runtime_error(p.string() + ": cannot write");
 }
-void write_bytes(const fs::path& p, const std::vector<uint8_t>& b) {
-  write_file(p, std::string(b.begin(), b.end()));
-}
+void write_bytes(const fs::path& p, const std::vector<uint8_t>& b) { write_file(p, std::string(b.begin(), b.end())); }
 std::string read_file(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   if (!in) throw std::runtime_error(p.string() + ": cannot read");
@@ -53,12 +51,18 @@ toml::table to_toml(const nlohmann::json& j);
 toml::array to_toml_array(const nlohmann::json& j);
 template <class Add>
 void add_value(const nlohmann::json& v, Add add) {
-  if (v.is_object()) add(to_toml(v));
-  else if (v.is_array()) add(to_toml_array(v));
-  else if (v.is_boolean()) add(v.get<bool>());
-  else if (v.is_number_integer()) add(v.get<int64_t>());
-  else if (v.is_number()) add(v.get<double>());
-  else if (v.is_string()) add(v.get<std::string>());
+  if (v.is_object())
+    add(to_toml(v));
+  else if (v.is_array())
+    add(to_toml_array(v));
+  else if (v.is_boolean())
+    add(v.get<bool>());
+  else if (v.is_number_integer())
+    add(v.get<int64_t>());
+  else if (v.is_number())
+    add(v.get<double>());
+  else if (v.is_string())
+    add(v.get<std::string>());
 }
 toml::table to_toml(const nlohmann::json& j) {
   toml::table t;
@@ -105,9 +109,11 @@ int main(int argc, char** argv) {
     const fs::path out = argv[4];
     const LogContents log = read_event_log(argv[1]);
     if (log.records.empty() || log.truncated) throw std::runtime_error(std::string(argv[1]) + ": empty or damaged log");
-    const std::map<std::string, std::string> folder = {
-        {kChannelRun, "run_t"},           {kChannelGeneration, "generation_t"}, {kChannelGenome, "cppn_genome_t"},
-        {kChannelMorphology, "morphology_t"}, {kChannelPose, "pose_t"}};
+    const std::map<std::string, std::string> folder = {{kChannelRun, "run_t"},
+                                                       {kChannelGeneration, "generation_t"},
+                                                       {kChannelGenome, "cppn_genome_t"},
+                                                       {kChannelMorphology, "morphology_t"},
+                                                       {kChannelPose, "pose_t"}};
     std::map<std::string, int> written;
     const int per_channel = 4;
     std::vector<LogRecord> head;  // the run's first events, up to its first few poses
@@ -146,7 +152,8 @@ int main(int argc, char** argv) {
         // bus_status_t is never logged: made from the run's own generation messages,
         // as robozoo-evolve sends it after each generation.
         generation_t m;
-        if (!safe_decode(r.data.data(), r.data.size(), m)) throw std::runtime_error("a logged generation_t does not decode");
+        if (!safe_decode(r.data.data(), r.data.size(), m))
+          throw std::runtime_error("a logged generation_t does not decode");
         bus_status_t b{};
         b.utime = m.utime;
         b.run_id = m.run_id;

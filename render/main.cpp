@@ -36,8 +36,7 @@ namespace {
 
 /// Binds a "WxH" option to two size fields (px); its default is their values.
 /// A malformed value throws std::invalid_argument naming the option.
-CLI::Option* add_size_option(CLI::App* app, const std::string& name, int& width, int& height,
-                             const std::string& help) {
+CLI::Option* add_size_option(CLI::App* app, const std::string& name, int& width, int& height, const std::string& help) {
   return app
       ->add_option_function<std::string>(
           name,
@@ -69,16 +68,22 @@ void add_video_options(CLI::App* app, VideoOptions& o, FastFlag& f) {
   app->add_option("--hold", o.hold, "show the last frame this many seconds longer")->capture_default_str();
   app->add_option("--crf", o.encoder.crf, "x264 quality, 0-51, lower is better")->capture_default_str();
   f.preset_option = app->add_option("--preset", o.encoder.preset, "x264 preset")->capture_default_str();
-  f.threads_option = app->add_option("--threads", o.encoder.threads, "encoder threads; libx264's output depends on them: 1 gives the same bytes on every machine, 0 lets "
-                  "libx264 choose by the machine's cores")->capture_default_str();
+  f.threads_option =
+      app->add_option(
+             "--threads", o.encoder.threads,
+             "encoder threads; libx264's output depends on them: 1 gives the same bytes on every machine, 0 lets "
+             "libx264 choose by the machine's cores")
+          ->capture_default_str();
   app->add_flag("--fast", f.fast,
                 std::string("faster encoding, other bytes: x264 preset ") + kFastPreset +
                     " on libx264's own thread count (--threads 0) instead of veryfast on one thread; a larger file at "
                     "the same --crf, and the output is no longer byte-reproducible across machines (it follows the "
                     "cores); not with --preset or --threads");
   app->add_option("--samples", o.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
-  app->add_flag_callback("--no-overlay", [&o] { o.overlay = false; }, "no text over the picture");
-  app->add_flag_callback("--no-grid", [&o] { o.grid = false; }, "no grid on the ground");
+  app->add_flag_callback(
+      "--no-overlay", [&o] { o.overlay = false; }, "no text over the picture");
+  app->add_flag_callback(
+      "--no-grid", [&o] { o.grid = false; }, "no grid on the ground");
   app->add_option("--font-dir", o.font_dir, "folder with DejaVuSans.ttf and DejaVuSans-Bold.ttf");
 }
 
@@ -86,7 +91,8 @@ void add_video_options(CLI::App* app, VideoOptions& o, FastFlag& f) {
 void finish_video_options(VideoOptions& o, const FastFlag& f) {
   if (f.fast) {
     if (f.preset_option->count() > 0 || f.threads_option->count() > 0)
-      throw std::invalid_argument("--fast sets the x264 preset and threads itself: give --fast or --preset/--threads, not both");
+      throw std::invalid_argument(
+          "--fast sets the x264 preset and threads itself: give --fast or --preset/--threads, not both");
     o.encoder = fast_encoder(o.encoder);
   }
   validate(o);
@@ -194,7 +200,8 @@ int run_video(VideoCmdArgs& a) {
                  a.out.c_str(), static_cast<long long>(subject.card.genome_id), subject.card.generation,
                  subject.card.fitness, s.frames, o.encoder.width, o.encoder.height,
                  subject.trajectory.end_time() - subject.trajectory.start_time(), s.total_seconds, s.draw_seconds,
-                 s.overlay_seconds, s.encode_seconds, subject.trajectory.resimulated ? " (re-simulated: no poses in the log)" : "");
+                 s.overlay_seconds, s.encode_seconds,
+                 subject.trajectory.resimulated ? " (re-simulated: no poses in the log)" : "");
   return 0;
 }
 
@@ -227,7 +234,8 @@ struct BenchArgs {
 
 int run_bench_command(BenchArgs& a) {
   if (a.fast.fast)
-    throw std::invalid_argument("bench measures the encoder settings given and --fast's side by side: leave out --fast");
+    throw std::invalid_argument(
+        "bench measures the encoder settings given and --fast's side by side: leave out --fast");
   BenchOptions& o = a.options;
   finish_video_options(o.video, a.fast);
   print(std::cout, run_bench(o));
@@ -249,11 +257,13 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000));
   zc->add_option("--generation", zoo.generation, "the champion of generation G of each run")
       ->check(CLI::Range(0, 1000000000));
-  add_size_option(zc, "--cell", zoo.sheet.cell_width, zoo.sheet.cell_height, "size of each robot's picture, WIDTHxHEIGHT");
+  add_size_option(zc, "--cell", zoo.sheet.cell_width, zoo.sheet.cell_height,
+                  "size of each robot's picture, WIDTHxHEIGHT");
   zc->add_option("--columns", zoo.sheet.columns, "robots per row (0: automatic)")->capture_default_str();
   zc->add_option("--title", zoo.sheet.title, "a title above the grid");
   zc->add_flag("--same-scale", zoo.sheet.same_scale, "one camera distance for all robots (sizes comparable)");
-  zc->add_flag_callback("--no-grid", [&zoo] { zoo.sheet.grid = false; }, "no grid on the ground");
+  zc->add_flag_callback(
+      "--no-grid", [&zoo] { zoo.sheet.grid = false; }, "no grid on the ground");
   zc->add_option("--samples", zoo.sheet.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
   zc->add_option("--font-size", zoo.sheet.font_size, "caption size in pixels")->capture_default_str();
   zc->add_option("--font-dir", zoo.sheet.font_dir, "folder with DejaVuSans.ttf and DejaVuSans-Bold.ttf");
@@ -289,8 +299,10 @@ int main(int argc, char** argv) {
   add_video_options(lc, live.video, live_args.fast);
 
   BenchArgs bench;
-  CLI::App* bc = app.add_subcommand("bench", "benchmark: drawing and encoding frames per second, one champion's video; "
-                                    "the encoder settings given (default: the default's) against --fast's, same frames");
+  CLI::App* bc =
+      app.add_subcommand("bench",
+                         "benchmark: drawing and encoding frames per second, one champion's video; "
+                         "the encoder settings given (default: the default's) against --fast's, same frames");
   bc->add_option("log", bench.options.log, "robozoo-evolve log (its best champion is drawn)")->required();
   bc->add_option("--frames", bench.options.frames, "frames timed")->capture_default_str()->check(CLI::Range(1, 100000));
   add_video_options(bc, bench.options.video, bench.fast);

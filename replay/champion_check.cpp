@@ -76,7 +76,8 @@ void compare_poses(const LogContents& log, const LogIndex& index, const LoggedGe
     out.poses_expected = static_cast<int64_t>(want.size());
     cmp.set_context("trajectory");
     for (size_t i = 0; i < std::max(poses.size(), want.size()); ++i) {
-      if (rule == TrajectoryRule::Damaged && (i >= poses.size() || i >= want.size() || poses[i].pose.step != want[i].step)) {
+      if (rule == TrajectoryRule::Damaged &&
+          (i >= poses.size() || i >= want.size() || poses[i].pose.step != want[i].step)) {
         out.problems.push_back("its trajectory cannot be proved complete: events near it do not decode (" +
                                std::to_string(poses.size()) + " of " + std::to_string(want.size()) + " poses read)");
         break;

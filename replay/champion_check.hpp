@@ -33,10 +33,10 @@ struct ChampionResult {
   bool champion = true;
   std::vector<std::string> problems;  ///< why (part of) it could not be checked; Unusable when not empty
   // What was recomputed
-  int spheres = 0;                    ///< spheres grown (count)
-  int64_t same_genes_as = -1;         ///< an earlier genome with the same genes whose growth and
-                                      ///< evaluation were re-used, -1 if none
-  int32_t same_genes_generation = -1; ///< its generation
+  int spheres = 0;                     ///< spheres grown (count)
+  int64_t same_genes_as = -1;          ///< an earlier genome with the same genes whose growth and
+                                       ///< evaluation were re-used, -1 if none
+  int32_t same_genes_generation = -1;  ///< its generation
   bool morphology_logged = false;
   bool morphology_ok = false;
   int64_t poses_logged = 0;           ///< decodable poses of this genome in the log (count)
@@ -49,10 +49,10 @@ struct ChampionResult {
   double logged_fitness = 0.0, recomputed_fitness = 0.0;
   int logged_outcome = -1, recomputed_outcome = -1;
   // Every difference
-  std::vector<Mismatch> mismatches;   ///< the first ones, in order of discovery
-  int64_t mismatch_count = 0;         ///< all of them (count)
-  int64_t values_compared = 0;        ///< (count)
-  double max_error = 0.0;             ///< largest value_error over the real values compared
+  std::vector<Mismatch> mismatches;  ///< the first ones, in order of discovery
+  int64_t mismatch_count = 0;        ///< all of them (count)
+  int64_t values_compared = 0;       ///< (count)
+  double max_error = 0.0;            ///< largest value_error over the real values compared
 };
 
 const char* status_name(ChampionResult::Status s);  ///< "ok", "diverged", "unusable"

@@ -84,7 +84,8 @@ CheckReport check_log(const ScannedLog& scanned, const CheckOptions& options, co
   RecomputeCache cache;
   for (size_t i = 0; i < todo.size(); ++i) {
     const LoggedGenome& g = *todo[i];
-    const auto config = g.run_event >= 0 ? config_of_event.find(static_cast<size_t>(g.run_event)) : config_of_event.end();
+    const auto config =
+        g.run_event >= 0 ? config_of_event.find(static_cast<size_t>(g.run_event)) : config_of_event.end();
     if (config == config_of_event.end()) {
       ChampionResult c;
       c.status = ChampionResult::Status::Unusable;
@@ -96,9 +97,9 @@ CheckReport check_log(const ScannedLog& scanned, const CheckOptions& options, co
       report.champions.push_back(std::move(c));
     } else {
       const auto rule = structure.trajectory.find(g.genome_event);
-      report.champions.push_back(check_champion(log, index, g, config->second, params, &cache,
-                                                rule == structure.trajectory.end() ? TrajectoryRule::MayBeCut
-                                                                                   : rule->second));
+      report.champions.push_back(
+          check_champion(log, index, g, config->second, params, &cache,
+                         rule == structure.trajectory.end() ? TrajectoryRule::MayBeCut : rule->second));
     }
     if (progress) progress(i + 1, todo.size());
   }

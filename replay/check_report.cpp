@@ -54,23 +54,26 @@ int CheckReport::exit_code() const {
 std::string champion_line(const ChampionResult& c, bool with_run) {
   std::ostringstream o;
   char head[64];
-  std::snprintf(head, sizeof head, "%-9s", c.status == ChampionResult::Status::Ok         ? "ok"
-                                           : c.status == ChampionResult::Status::Diverged ? "DIVERGED"
-                                                                                          : "UNUSABLE");
+  std::snprintf(head, sizeof head, "%-9s",
+                c.status == ChampionResult::Status::Ok         ? "ok"
+                : c.status == ChampionResult::Status::Diverged ? "DIVERGED"
+                                                               : "UNUSABLE");
   o << head;
   if (with_run) o << "run " << c.run_id << "  ";
   o << "gen " << c.generation << "  genome " << c.genome_id << (c.champion ? "" : " (not a champion)");
   if (c.status == ChampionResult::Status::Diverged && !c.mismatches.empty()) {
     const Mismatch& m = c.mismatches.front();
     o << "  " << where(m) << ": logged " << m.logged << ", recomputed " << m.recomputed;
-    o << "  (max error " << error_text(c.max_error) << "; " << plural(c.mismatch_count, "value differs", "values differ");
+    o << "  (max error " << error_text(c.max_error) << "; "
+      << plural(c.mismatch_count, "value differs", "values differ");
     if (c.poses_diverged > 0)
       o << ", " << c.poses_diverged << " of " << c.poses_compared << " poses from step " << c.first_divergent_step;
     o << ")";
   } else {
-    o << "  spheres " << c.spheres << "  morphology " << (c.morphology_logged ? "same" : "not logged")
-      << "  poses " << c.poses_compared;
-    if (c.poses_expected > 0 && c.poses_expected != c.poses_logged) o << " (of " << c.poses_expected << " in its trajectory)";
+    o << "  spheres " << c.spheres << "  morphology " << (c.morphology_logged ? "same" : "not logged") << "  poses "
+      << c.poses_compared;
+    if (c.poses_expected > 0 && c.poses_expected != c.poses_logged)
+      o << " (of " << c.poses_expected << " in its trajectory)";
     if (c.poses_logged == 0 && c.recomputed_outcome > 0) o << " (none logged under this id)";
     if (c.same_genes_as >= 0)
       o << "  same genes as genome " << c.same_genes_as << " (gen " << c.same_genes_generation << ")";
@@ -110,12 +113,12 @@ std::string format_text(const CheckReport& r) {
     morph += c.morphology_logged;
     fit += c.fitness_compared;
   }
-  o << "summary: " << plural(static_cast<int64_t>(r.champions.size()), "genome", "genomes") << " checked: "
-    << r.count(ChampionResult::Status::Ok) << " ok, " << r.count(ChampionResult::Status::Diverged) << " diverged, "
-    << r.count(ChampionResult::Status::Unusable) << " unusable; " << r.generations_proved
-    << " generations' messages proved, " << plural(static_cast<int64_t>(r.structure.size()), "message differs", "messages differ")
-    << "; " << morph << " morphologies, "
-    << plural(poses, "pose", "poses") << " and " << fit << " fitnesses compared "
+  o << "summary: " << plural(static_cast<int64_t>(r.champions.size()), "genome", "genomes")
+    << " checked: " << r.count(ChampionResult::Status::Ok) << " ok, " << r.count(ChampionResult::Status::Diverged)
+    << " diverged, " << r.count(ChampionResult::Status::Unusable) << " unusable; " << r.generations_proved
+    << " generations' messages proved, "
+    << plural(static_cast<int64_t>(r.structure.size()), "message differs", "messages differ") << "; " << morph
+    << " morphologies, " << plural(poses, "pose", "poses") << " and " << fit << " fitnesses compared "
     << (r.tolerance > 0 ? "within a relative error of " + short_number(r.tolerance) : std::string("bit for bit"))
     << "; " << plural(static_cast<int64_t>(r.input_problems.size()), "input problem", "input problems");
   char secs[32];
@@ -154,31 +157,31 @@ nlohmann::json to_json(const CheckReport& r) {
                    {"logged", x.logged},
                    {"recomputed", x.recomputed},
                    {"error", error_json(x.error)}});
-    j["champions"].push_back({{"run_id", c.run_id},
-                              {"generation", c.generation},
-                              {"genome_id", c.genome_id},
-                              {"champion", c.champion},
-                              {"status", status_name(c.status)},
-                              {"problems", c.problems},
-                              {"spheres", c.spheres},
-                              {"same_genes_as", c.same_genes_as >= 0 ? json(c.same_genes_as) : json(nullptr)},
-                              {"morphology_logged", c.morphology_logged},
-                              {"morphology_same", c.morphology_ok},
-                              {"poses_logged", c.poses_logged},
-                              {"poses_expected", c.poses_expected},
-                              {"poses_compared", c.poses_compared},
-                              {"poses_diverged", c.poses_diverged},
-                              {"first_divergent_step",
-                               c.first_divergent_step >= 0 ? json(c.first_divergent_step) : json(nullptr)},
-                              {"fitness_compared", c.fitness_compared},
-                              {"logged_fitness", exact_text(c.logged_fitness)},
-                              {"recomputed_fitness", exact_text(c.recomputed_fitness)},
-                              {"logged_outcome", c.logged_outcome},
-                              {"recomputed_outcome", c.recomputed_outcome},
-                              {"values_compared", c.values_compared},
-                              {"mismatch_count", c.mismatch_count},
-                              {"max_error", error_json(c.max_error)},
-                              {"mismatches", m}});
+    j["champions"].push_back(
+        {{"run_id", c.run_id},
+         {"generation", c.generation},
+         {"genome_id", c.genome_id},
+         {"champion", c.champion},
+         {"status", status_name(c.status)},
+         {"problems", c.problems},
+         {"spheres", c.spheres},
+         {"same_genes_as", c.same_genes_as >= 0 ? json(c.same_genes_as) : json(nullptr)},
+         {"morphology_logged", c.morphology_logged},
+         {"morphology_same", c.morphology_ok},
+         {"poses_logged", c.poses_logged},
+         {"poses_expected", c.poses_expected},
+         {"poses_compared", c.poses_compared},
+         {"poses_diverged", c.poses_diverged},
+         {"first_divergent_step", c.first_divergent_step >= 0 ? json(c.first_divergent_step) : json(nullptr)},
+         {"fitness_compared", c.fitness_compared},
+         {"logged_fitness", exact_text(c.logged_fitness)},
+         {"recomputed_fitness", exact_text(c.recomputed_fitness)},
+         {"logged_outcome", c.logged_outcome},
+         {"recomputed_outcome", c.recomputed_outcome},
+         {"values_compared", c.values_compared},
+         {"mismatch_count", c.mismatch_count},
+         {"max_error", error_json(c.max_error)},
+         {"mismatches", m}});
   }
   j["generations_proved"] = r.generations_proved;
   j["structure"] = json::array();
@@ -193,9 +196,8 @@ nlohmann::json to_json(const CheckReport& r) {
                               {"rule", d.rule}});
   j["input_problems"] = json::array();
   for (const auto& p : r.input_problems)
-    j["input_problems"].push_back({{"eventnum", p.eventnum >= 0 ? json(p.eventnum) : json(nullptr)},
-                                   {"channel", p.channel},
-                                   {"what", p.what}});
+    j["input_problems"].push_back(
+        {{"eventnum", p.eventnum >= 0 ? json(p.eventnum) : json(nullptr)}, {"channel", p.channel}, {"what", p.what}});
   j["summary"] = {{"genomes", r.champions.size()},
                   {"ok", r.count(ChampionResult::Status::Ok)},
                   {"diverged", r.count(ChampionResult::Status::Diverged)},

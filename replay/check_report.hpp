@@ -17,25 +17,25 @@ struct RunInfo {
   std::string run_id;
   std::string software_version;
   int64_t seed = 0;
-  std::string regime;     ///< "feedforward" / "recurrent"
+  std::string regime;  ///< "feedforward" / "recurrent"
   int32_t population = 0;
   int32_t generations = 0;
 };
 
 struct CheckReport {
   std::string log_path;
-  double tolerance = 0.0;            ///< 0: bit for bit
-  bool forced = false;               ///< --force: another software version accepted
-  int64_t events = 0;                ///< events read (count)
-  int64_t foreign_events = 0;        ///< events of other channels, ignored (count)
-  int64_t file_bytes = 0;            ///< (bytes)
-  std::vector<RunInfo> runs;         ///< distinct runs, in log order
+  double tolerance = 0.0;      ///< 0: bit for bit
+  bool forced = false;         ///< --force: another software version accepted
+  int64_t events = 0;          ///< events read (count)
+  int64_t foreign_events = 0;  ///< events of other channels, ignored (count)
+  int64_t file_bytes = 0;      ///< (bytes)
+  std::vector<RunInfo> runs;   ///< distinct runs, in log order
   std::vector<ChampionResult> champions;
   std::vector<LogDifference> structure;      ///< messages out of place, missing, extra, or with wrong figures
-  int32_t generations_proved = 0;           ///< generation_t messages whose place and figures were checked (count)
+  int32_t generations_proved = 0;            ///< generation_t messages whose place and figures were checked (count)
   std::vector<InputProblem> input_problems;  ///< damage, unusable events, a last generation cut short
-  std::string fatal;                 ///< not empty: the log could not be checked at all
-  double seconds = 0.0;              ///< wall time of the check (s)
+  std::string fatal;                         ///< not empty: the log could not be checked at all
+  double seconds = 0.0;                      ///< wall time of the check (s)
 
   int64_t count(ChampionResult::Status s) const;
   /// 0: every champion matches, every message is where and what it should be,

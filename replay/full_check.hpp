@@ -24,9 +24,9 @@
 namespace robozoo::replay {
 
 struct FullCheckOptions {
-  bool force = false;            ///< re-run a log written by another software version
-  std::string work_dir;          ///< where the re-run's log and checkpoint go (must exist); empty: a temporary folder
-  int max_generations = -1;      ///< -1: every generation the log holds; else at most this many (count)
+  bool force = false;        ///< re-run a log written by another software version
+  std::string work_dir;      ///< where the re-run's log and checkpoint go (must exist); empty: a temporary folder
+  int max_generations = -1;  ///< -1: every generation the log holds; else at most this many (count)
 };
 
 /// The first message in which the re-run and the log differ.
@@ -45,17 +45,17 @@ struct FullDifference {
 struct FullCheckReport {
   std::string log_path;
   std::string run_id;
-  std::string software_version;     ///< of the log
+  std::string software_version;  ///< of the log
   int64_t seed = 0;
   std::string regime;
-  int32_t generations_logged = 0;   ///< ROBOZOO_GENERATION messages of the run in the log (count)
-  int32_t generations_rerun = 0;    ///< generations evolved again (count)
-  int64_t events_compared = 0;      ///< robozoo events found equal (count)
+  int32_t generations_logged = 0;  ///< ROBOZOO_GENERATION messages of the run in the log (count)
+  int32_t generations_rerun = 0;   ///< generations evolved again (count)
+  int64_t events_compared = 0;     ///< robozoo events found equal (count)
   bool diverged = false;
-  FullDifference difference;        ///< when diverged
+  FullDifference difference;                ///< when diverged
   std::vector<std::string> input_problems;  ///< damage of the log (it is still compared as read)
-  std::string fatal;                ///< not empty: nothing could be compared
-  double seconds = 0.0;             ///< wall time (s)
+  std::string fatal;                        ///< not empty: nothing could be compared
+  double seconds = 0.0;                     ///< wall time (s)
   /// 0 every message equal and the log intact; 1 a divergence; 2 unusable input.
   int exit_code() const;
 };

@@ -42,9 +42,9 @@ struct LiveChecker::Run {
   int32_t next_generation = -1;  ///< -1: none seen yet
   bool key_known = false;        ///< the previous generation's champion was received
   uint64_t last_key = 0;
-  int64_t received = 0;          ///< ROBOZOO_RUN/... messages of this run received (count)
-  int64_t received_at_status = -1;  ///< `received` when the last ROBOZOO_BUS arrived
-  int64_t published_at_status = -1; ///< what that status said was published
+  int64_t received = 0;              ///< ROBOZOO_RUN/... messages of this run received (count)
+  int64_t received_at_status = -1;   ///< `received` when the last ROBOZOO_BUS arrived
+  int64_t published_at_status = -1;  ///< what that status said was published
   int64_t publish_failures = 0;
   RecomputeCache cache;
 };
@@ -159,7 +159,8 @@ void LiveChecker::ingest(const std::string& channel, const std::vector<uint8_t>&
     if (run->next_generation >= 0 && generation > run->next_generation)
       summary_.loss.push_back("run " + run_id + ": generations " + num(run->next_generation) + " to " +
                               num(generation - 1) + " never arrived");
-    if (run->next_generation < 0 && generation > 0) on_line_("joined run " + run_id + " at generation " + num(generation));
+    if (run->next_generation < 0 && generation > 0)
+      on_line_("joined run " + run_id + " at generation " + num(generation));
     if (run->next_generation >= 0 && generation < run->next_generation)
       summary_.problems.push_back("run " + run_id + ": generation " + num(generation) + " arrived after generation " +
                                   num(run->next_generation - 1));
@@ -222,7 +223,8 @@ void LiveChecker::close_block(Run& run, bool at_end) {
                               due || !champion->pose_events.empty() ? TrajectoryRule::Lossy : TrajectoryRule::None);
     run.last_key = key;
     run.key_known = key_ok;
-    if (std::memcmp(&m.fitness, &gm.best_fitness, sizeof m.fitness) != 0 && v.result.status != ChampionResult::Status::Unusable) {
+    if (std::memcmp(&m.fitness, &gm.best_fitness, sizeof m.fitness) != 0 &&
+        v.result.status != ChampionResult::Status::Unusable) {
       // generation_t's best fitness must be the champion's.
       v.result.status = ChampionResult::Status::Diverged;
       v.result.mismatches.insert(v.result.mismatches.begin(),
@@ -339,11 +341,11 @@ LiveCheckSummary check_live(const std::string& url, const LiveCheckOptions& opti
 }
 
 std::string format_live_summary(const LiveCheckSummary& s) {
-  std::string o = "summary: " + num(static_cast<int64_t>(s.verdicts.size())) + " champions checked: " +
-                  num(s.count(ChampionResult::Status::Ok)) + " ok, " + num(s.count(ChampionResult::Status::Diverged)) +
-                  " diverged, " + num(s.count(ChampionResult::Status::Unusable)) + " unusable, " +
-                  num(s.champions_with_loss()) + " with bus loss; " + num(s.messages) + " messages received, " +
-                  num(s.bad) + " bad";
+  std::string o = "summary: " + num(static_cast<int64_t>(s.verdicts.size())) +
+                  " champions checked: " + num(s.count(ChampionResult::Status::Ok)) + " ok, " +
+                  num(s.count(ChampionResult::Status::Diverged)) + " diverged, " +
+                  num(s.count(ChampionResult::Status::Unusable)) + " unusable, " + num(s.champions_with_loss()) +
+                  " with bus loss; " + num(s.messages) + " messages received, " + num(s.bad) + " bad";
   for (const auto& l : s.loss) o += "\nbus loss: " + l;
   for (const auto& p : s.problems) o += "\ninput: " + p;
   if (s.runs.empty()) o += "\ninput: no ROBOZOO_RUN arrived: nothing was checked";

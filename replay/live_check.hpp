@@ -31,13 +31,13 @@
 namespace robozoo::replay {
 
 struct LiveCheckOptions {
-  double tolerance = 0.0;         ///< 0: bit for bit; else the largest value_error allowed (dimensionless)
-  bool force = false;             ///< check runs written by another software version
+  double tolerance = 0.0;  ///< 0: bit for bit; else the largest value_error allowed (dimensionless)
+  bool force = false;      ///< check runs written by another software version
   /// KEY=VALUE configuration assignments applied over each run's logged
   /// configuration before re-computing (robozoo-evolve's --set syntax): a what-if
   /// tool, and how the tests make a replay whose physics differs.
   std::vector<std::string> sets;
-  size_t keep = 20;               ///< mismatches kept per champion (count)
+  size_t keep = 20;  ///< mismatches kept per champion (count)
 };
 
 /// One champion's verdict.
@@ -47,11 +47,11 @@ struct LiveVerdict {
 };
 
 struct LiveCheckSummary {
-  int64_t messages = 0;            ///< ROBOZOO_* messages received (count)
-  int64_t bad = 0;                 ///< messages that do not decode (count), skipped
-  std::vector<std::string> runs;   ///< run ids seen
+  int64_t messages = 0;           ///< ROBOZOO_* messages received (count)
+  int64_t bad = 0;                ///< messages that do not decode (count), skipped
+  std::vector<std::string> runs;  ///< run ids seen
   std::vector<LiveVerdict> verdicts;
-  std::vector<std::string> loss;   ///< bus loss outside any champion (missing generations, the publisher's count)
+  std::vector<std::string> loss;      ///< bus loss outside any champion (missing generations, the publisher's count)
   std::vector<std::string> problems;  ///< unusable input: refused versions, bad configurations, bad messages
   int64_t count(ChampionResult::Status s) const;
   int64_t champions_with_loss() const;

@@ -27,10 +27,10 @@ struct LiveSimOptions {
 struct LiveSimStats {
   std::string run_id;
   int32_t generation = -1;
-  int64_t poses_sent = 0;  ///< (count)
-  int steps_run = 0;       ///< physics steps simulated (count)
+  int64_t poses_sent = 0;               ///< (count)
+  int steps_run = 0;                    ///< physics steps simulated (count)
   bool simulated_in_evolution = false;  ///< the robot earned simulation (r term); otherwise simulated anyway
-  double d = 0.0;          ///< the re-simulation's d term (m)
+  double d = 0.0;                       ///< the re-simulation's d term (m)
   int64_t publish_failures = 0;
 };
 

@@ -19,10 +19,10 @@ constexpr size_t kNone = static_cast<size_t>(-1);
 
 /// Where a run is in its sequence of messages.
 enum class Phase {
-  Start,       ///< nothing of the run yet
-  AfterRun,    ///< a run_t: the generation_t comes next
-  InGenomes,   ///< after generation_t: genomes and their morphologies
-  InPoses,     ///< the champion's trajectory
+  Start,      ///< nothing of the run yet
+  AfterRun,   ///< a run_t: the generation_t comes next
+  InGenomes,  ///< after generation_t: genomes and their morphologies
+  InPoses,    ///< the champion's trajectory
 };
 
 /// One generation's messages, gathered until the next run_t (or the end).
@@ -39,8 +39,8 @@ struct Block {
   uint64_t champion_key = 0;
   std::array<int, kNumOutcomes> outcomes{};
   int64_t poses = 0;
-  size_t last_event = 0;            ///< LogIndex::events index of its last event
-  int64_t undecodable = 0;          ///< events among its messages that do not decode (count)
+  size_t last_event = 0;    ///< LogIndex::events index of its last event
+  int64_t undecodable = 0;  ///< events among its messages that do not decode (count)
 };
 
 struct RunState {
@@ -97,11 +97,11 @@ class Checker {
                const std::string& rule) {
     if (may_be_cut || b.undecodable > 0) {
       const LogRecord& r = record(b.last_event);
-      const std::string why = b.undecodable > 0
-                                  ? num(b.undecodable) + " of its events do not decode, so generation " +
-                                        num(b.generation) + " of run " + run_id + " cannot be proved complete"
-                                  : "the log ends before generation " + num(b.generation) + " of run " + run_id +
-                                        " is complete";
+      const std::string why =
+          b.undecodable > 0
+              ? num(b.undecodable) + " of its events do not decode, so generation " + num(b.generation) + " of run " +
+                    run_id + " cannot be proved complete"
+              : "the log ends before generation " + num(b.generation) + " of run " + run_id + " is complete";
       out_.incomplete.push_back({static_cast<int64_t>(b.last_event), r.eventnum, channel,
                                  why + ": " + field + " " + logged + ", expected " + expected});
       return;
@@ -184,7 +184,8 @@ class Checker {
     field("generations", m.generations == s.first.generations, num(m.generations), num(s.first.generations));
     field("steps", m.steps == s.first.steps, num(m.steps), num(s.first.steps));
     field("dt", std::memcmp(&m.dt, &s.first.dt, sizeof m.dt) == 0, exact_text(m.dt), exact_text(s.first.dt));
-    field("config_json", m.config_json == s.first.config_json, "(" + num(static_cast<int64_t>(m.config_json.size())) + " bytes)",
+    field("config_json", m.config_json == s.first.config_json,
+          "(" + num(static_cast<int64_t>(m.config_json.size())) + " bytes)",
           "the first ROBOZOO_RUN's (" + num(static_cast<int64_t>(s.first.config_json.size())) + " bytes)");
     if (s.open) close(m.run_id, s, false);
     s.phase = Phase::AfterRun;
@@ -259,9 +260,9 @@ class Checker {
         at_generation("champion_id", num(b.msg.champion_id), num(m.genome_id),
                       "champion_id names the generation's first genome message, its champion");
       if (std::memcmp(&m.fitness, &b.msg.best_fitness, sizeof m.fitness) != 0)
-        at_generation("best_fitness", exact_text(b.msg.best_fitness), exact_text(m.fitness),
-                      "best_fitness is the champion's fitness (its genome message, event " +
-                          num(record(k).eventnum) + ")");
+        at_generation(
+            "best_fitness", exact_text(b.msg.best_fitness), exact_text(m.fitness),
+            "best_fitness is the champion's fitness (its genome message, event " + num(record(k).eventnum) + ")");
       b.champion_event = k;
       b.champion_eventnum = record(k).eventnum;
       b.champion_simulated = m.outcome != static_cast<int8_t>(Outcome::NotSimulated);
@@ -328,17 +329,16 @@ class Checker {
               s.config->publish_all ? "with publish_all, a generation logs every genome"
                                     : "a generation logs its champion's genome");
     if (b.pending_morphology >= 0)
-      missing(run_id, b, may_be_cut, kChannelMorphology, "morphology of genome " + num(b.pending_morphology),
-              "none", "one", "each genome is followed by its morphology");
+      missing(run_id, b, may_be_cut, kChannelMorphology, "morphology of genome " + num(b.pending_morphology), "none",
+              "one", "each genome is followed by its morphology");
     if (s.config->publish_all && b.genomes == pop) {
-      const std::array<int, kNumOutcomes> counted = {b.msg.n_not_simulated, b.msg.n_completed, b.msg.n_stopped_early,
-                                                     b.msg.n_accel_fault,   b.msg.n_rolling_contact,
-                                                     b.msg.n_rolling_spin};
+      const std::array<int, kNumOutcomes> counted = {b.msg.n_not_simulated,   b.msg.n_completed,
+                                                     b.msg.n_stopped_early,   b.msg.n_accel_fault,
+                                                     b.msg.n_rolling_contact, b.msg.n_rolling_spin};
       for (int o = 0; o < kNumOutcomes; ++o)
         if (counted[o] != b.outcomes[o])
           out_.differences.push_back({b.gen_eventnum, kChannelGeneration, run_id, b.generation,
-                                      "n_" + outcome_name(static_cast<Outcome>(o)), num(counted[o]),
-                                      num(b.outcomes[o]),
+                                      "n_" + outcome_name(static_cast<Outcome>(o)), num(counted[o]), num(b.outcomes[o]),
                                       "with publish_all, the outcome counts are those of the logged genomes"});
     }
     if (b.champion_event == kNone) return;
@@ -352,12 +352,12 @@ class Checker {
     s.last_key = b.champion_key;
     s.last_key_known = b.champion_key_known;
     if ((rule == TrajectoryRule::Complete || rule == TrajectoryRule::Damaged) && b.poses == 0)
-      missing(run_id, b, false, kChannelPose, "poses of champion " + num(b.msg.champion_id), "none",
-              "its trajectory", "a new champion that was simulated has its trajectory logged");
+      missing(run_id, b, false, kChannelPose, "poses of champion " + num(b.msg.champion_id), "none", "its trajectory",
+              "a new champion that was simulated has its trajectory logged");
     if (rule == TrajectoryRule::None && b.poses > 0)
       extra(run_id, b, kChannelPose, "poses of champion " + num(b.msg.champion_id), num(b.poses), "none",
-              b.champion_simulated ? "a champion with the previous champion's genes has no trajectory of its own"
-                                   : "a champion that was not simulated has no trajectory");
+            b.champion_simulated ? "a champion with the previous champion's genes has no trajectory of its own"
+                                 : "a champion that was not simulated has no trajectory");
     ++out_.generations;
   }
 

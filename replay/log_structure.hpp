@@ -36,14 +36,14 @@ namespace robozoo::replay {
 
 /// A message that is not what robozoo-evolve writes at that place.
 struct LogDifference {
-  int64_t eventnum = -1;   ///< the event's number in the log; -1: the end of the log
-  std::string channel;     ///< the event's channel (or the missing message's)
+  int64_t eventnum = -1;  ///< the event's number in the log; -1: the end of the log
+  std::string channel;    ///< the event's channel (or the missing message's)
   std::string run_id;
-  int32_t generation = -1; ///< the generation it belongs to, -1 if none
-  std::string field;       ///< the field or property, e.g. "best_fitness", "channel", "poses"
-  std::string logged;      ///< what the log holds
-  std::string expected;    ///< what it should hold
-  std::string rule;        ///< the rule it breaks, one sentence
+  int32_t generation = -1;  ///< the generation it belongs to, -1 if none
+  std::string field;        ///< the field or property, e.g. "best_fitness", "channel", "poses"
+  std::string logged;       ///< what the log holds
+  std::string expected;     ///< what it should hold
+  std::string rule;         ///< the rule it breaks, one sentence
 };
 
 struct StructureReport {
@@ -51,7 +51,7 @@ struct StructureReport {
   std::vector<InputProblem> incomplete;    ///< a last generation cut short by the end of the log
   /// Per genome event (LogIndex::events index) of a champion: its trajectory rule.
   std::map<size_t, TrajectoryRule> trajectory;
-  int32_t generations = 0;                 ///< generation_t messages proved (count)
+  int32_t generations = 0;  ///< generation_t messages proved (count)
 };
 
 /// Proves the order and counts of a log's messages and generation_t's

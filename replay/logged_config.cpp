@@ -49,8 +49,7 @@ RunConfig config_from_run_message(const run_t& m) {
     throw std::invalid_argument(run + "run_t." + field + " is " + in_run + " but its configuration says " + in_config);
   };
   if (m.seed != c.seed) disagree("seed", std::to_string(m.seed), std::to_string(c.seed));
-  if (m.regime != static_cast<int8_t>(c.regime))
-    disagree("regime", std::to_string(m.regime), regime_name(c.regime));
+  if (m.regime != static_cast<int8_t>(c.regime)) disagree("regime", std::to_string(m.regime), regime_name(c.regime));
   if (m.population != c.neat.population)
     disagree("population", std::to_string(m.population), std::to_string(c.neat.population));
   if (m.generations != c.generations)

@@ -36,10 +36,10 @@ struct CheckArgs {
   std::string log;
   CheckOptions options;  ///< --tolerance, --force, --all-genomes, --max-mismatches (shared by --lcm-url and --full)
   bool json = false, quiet = false, progress = false, no_progress = false;
-  bool full = false;  ///< re-run the whole evolution and compare every message
+  bool full = false;              ///< re-run the whole evolution and compare every message
   FullCheckOptions full_options;  ///< --generations
-  int workers = 0;    ///< --full: worker processes (0: one per core)
-  std::string lcm_url;  ///< check --lcm-url: follow a live run instead of a log
+  int workers = 0;                ///< --full: worker processes (0: one per core)
+  std::string lcm_url;            ///< check --lcm-url: follow a live run instead of a log
   LiveCheckOptions live_options;  ///< --set
   double idle_exit = 0.0;
 };
@@ -165,7 +165,8 @@ bool load(const std::string& path, bool quiet, ScannedLog& scanned, LogIndex& in
   }
   index = index_log(scanned.contents);
   if (!quiet) {
-    for (const auto& d : scanned.damage) std::cerr << "robozoo-replay: warning: " << path << ": " << d.describe() << "\n";
+    for (const auto& d : scanned.damage)
+      std::cerr << "robozoo-replay: warning: " << path << ": " << d.describe() << "\n";
     for (const auto& p : index.problems)
       std::cerr << "robozoo-replay: warning: event " << p.eventnum << " (" << p.channel << "): " << p.what << "\n";
   }
@@ -209,9 +210,10 @@ int run_sim(const SimArgs& a) {
                       [&](const std::string& ch, const std::vector<uint8_t>& d) { return bus.publish(ch, d); });
     if (!a.quiet)
       std::cerr << "robozoo-replay: re-simulated genome " << a.options.genome_id << " (run " << s.run_id
-                << ", generation " << s.generation << ")" << (s.simulated_in_evolution ? "" : " (not simulated in evolution: its r term is under 15)")
-                << ": " << s.steps_run << " steps, d = " << s.d << " m, " << s.poses_sent << " poses sent on "
-                << a.lcm_url << "\n";
+                << ", generation " << s.generation << ")"
+                << (s.simulated_in_evolution ? "" : " (not simulated in evolution: its r term is under 15)") << ": "
+                << s.steps_run << " steps, d = " << s.d << " m, " << s.poses_sent << " poses sent on " << a.lcm_url
+                << "\n";
     return s.publish_failures ? 1 : 0;
   });
 }
@@ -255,24 +257,30 @@ int main(int argc, char** argv) {
       "message (utime and timings left out): that costs one evolution (--workers N, or mpirun -np N "
       "robozoo-replay check --full --mpi LOG). Exit 0: everything matches; 1: a divergence; 2: unusable input.");
   check->add_option("LOG", c.log, "the LCM log (not with --lcm-url)");
-  check->add_option("--lcm-url", c.lcm_url,
-                    "follow a live run on the bus instead (given alone: LCM's default URL) and check each champion "
-                    "as its generation completes; bus loss is reported apart from divergence")
+  check
+      ->add_option("--lcm-url", c.lcm_url,
+                   "follow a live run on the bus instead (given alone: LCM's default URL) and check each champion "
+                   "as its generation completes; bus loss is reported apart from divergence")
       ->expected(0, 1)
       ->default_str(kDefaultLcmUrl);
-  check->add_option("--idle-exit", c.idle_exit, "--lcm-url: finish after this many seconds without a message (0: "
-                                                "at a signal only)")
+  check
+      ->add_option("--idle-exit", c.idle_exit,
+                   "--lcm-url: finish after this many seconds without a message (0: "
+                   "at a signal only)")
       ->check(CLI::NonNegativeNumber);
-  check->add_option("--set", c.live_options.sets,
-                    "--lcm-url: change a key of the run's configuration before re-computing (KEY=VALUE, as "
-                    "robozoo-evolve --set): what would differ under another setting")
+  check
+      ->add_option("--set", c.live_options.sets,
+                   "--lcm-url: change a key of the run's configuration before re-computing (KEY=VALUE, as "
+                   "robozoo-evolve --set): what would differ under another setting")
       ->take_all();
-  check->add_option("--tolerance", c.options.tolerance,
-                    "allowed error |a-b|/max(1,|a|,|b|) for logs made on another machine (default 0: bit for bit)")
+  check
+      ->add_option("--tolerance", c.options.tolerance,
+                   "allowed error |a-b|/max(1,|a|,|b|) for logs made on another machine (default 0: bit for bit)")
       ->check(CLI::NonNegativeNumber);
   check->add_flag("--json", c.json, "print the report as JSON");
   check->add_flag("--force", c.options.force, "check runs written by another robozoo version");
-  check->add_flag("--all-genomes", c.options.all_genomes, "check every logged genome (--publish-all runs), not only champions");
+  check->add_flag("--all-genomes", c.options.all_genomes,
+                  "check every logged genome (--publish-all runs), not only champions");
   check->add_option("--max-mismatches", c.options.keep, "differences listed per genome in the JSON report")
       ->check(CLI::Range(1, 1000000));
   check->add_flag("--progress", c.progress, "show the progress bar even when stderr is not a terminal");
@@ -303,9 +311,10 @@ int main(int argc, char** argv) {
   playc->add_flag("--loop", p.options.loop, "start again after the last event, until interrupted");
   playc->add_option("--start-generation", p.options.start_generation, "skip the events of earlier generations")
       ->check(CLI::NonNegativeNumber);
-  playc->add_flag_callback("--log-time", [&p] { p.options.pace_poses_by_sim_time = false; },
-                  "pace poses by their log timestamps (a trajectory is logged in one burst) instead of their "
-                  "simulated time");
+  playc->add_flag_callback(
+      "--log-time", [&p] { p.options.pace_poses_by_sim_time = false; },
+      "pace poses by their log timestamps (a trajectory is logged in one burst) instead of their "
+      "simulated time");
   playc->add_flag("--quiet,-q", p.quiet, "no messages");
 
   SimArgs s;

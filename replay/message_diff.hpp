@@ -8,8 +8,8 @@
 namespace robozoo::replay {
 
 struct FieldDifference {
-  std::string field;   ///< path of the first differing field; empty if none was found
-  std::string a, b;    ///< the two values as JSON text (doubles round-trip)
+  std::string field;  ///< path of the first differing field; empty if none was found
+  std::string a, b;   ///< the two values as JSON text (doubles round-trip)
 };
 
 /// Decodes both as `channel`'s type (safe_decode) and walks their fields

@@ -19,9 +19,9 @@ namespace robozoo::replay {
 class RecomputeCache {
  public:
   struct Entry {
-    Genome genes;            ///< id set to 0
-    std::string config;      ///< the configuration, as JSON text
-    int64_t first_genome_id = -1;   ///< the genome it was first computed for
+    Genome genes;                  ///< id set to 0
+    std::string config;            ///< the configuration, as JSON text
+    int64_t first_genome_id = -1;  ///< the genome it was first computed for
     int32_t first_generation = -1;
     Robot robot;
     Evaluation evaluation;

@@ -21,8 +21,8 @@ std::string number(double v, int digits) {
 // The names of robozoo's CPPN inputs and outputs (docs/method.md, "The CPPN"),
 // used when a genome has exactly that many.
 const char* const kInputNames[] = {"x", "y", "z", "r_parent", "bias", "s_distance", "s_touch", "s_proprio", "s_time"};
-const char* const kOutputNames[] = {"m",        "r_scale", "j",       "theta",  "tau", "omega",
-                                    "distance", "touch",   "proprio", "time",   "w"};
+const char* const kOutputNames[] = {"m",        "r_scale", "j",       "theta", "tau", "omega",
+                                    "distance", "touch",   "proprio", "time",  "w"};
 constexpr int kNamedInputs = 9, kNamedOutputs = 11;
 
 std::string node_label(const cppn_node_t& n, int input_index, int output_index, bool named) {
@@ -58,8 +58,7 @@ std::string cppn_to_dot(const cppn_genome_t& g, const CppnDrawingParams& params)
   std::ostringstream out;
   out << "digraph cppn {\n"
       << "  graph [rankdir=LR, ranksep=2.2, nodesep=0.2, label=\"genome " << g.genome_id << ", generation "
-      << g.generation << ", fitness " << number(g.fitness, 3)
-      << "\", labelloc=t, fontname=\"DejaVu Sans\"];\n"
+      << g.generation << ", fitness " << number(g.fitness, 3) << "\", labelloc=t, fontname=\"DejaVu Sans\"];\n"
       << "  node [shape=circle, fixedsize=true, width=0.75, fontsize=9, fontname=\"DejaVu Sans\", style=filled];\n"
       << "  edge [arrowsize=0.6];\n";
   // Columns: one per distinct drawing position, in order, chained by invisible links.
@@ -99,8 +98,8 @@ std::string cppn_to_dot(const cppn_genome_t& g, const CppnDrawingParams& params)
     if (!l.enabled)
       out << "color=\"#b0b0b0\", style=dotted, penwidth=" << number(params.min_pen_width, 2);
     else
-      out << "color=\"" << (l.weight >= 0 ? "#2b6cb0" : "#c53030") << "\", penwidth="
-          << number(params.min_pen_width + w * (params.max_pen_width - params.min_pen_width), 2)
+      out << "color=\"" << (l.weight >= 0 ? "#2b6cb0" : "#c53030")
+          << "\", penwidth=" << number(params.min_pen_width + w * (params.max_pen_width - params.min_pen_width), 2)
           << (recurrent ? ", style=dashed" : "");
     if (recurrent || !l.enabled) out << ", constraint=false";
     out << ", tooltip=\"" << (recurrent ? "recurrent " : "") << "weight " << number(l.weight, 4) << "\"];\n";

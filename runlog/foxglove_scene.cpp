@@ -53,8 +53,8 @@ json vec3_schema() { return object("foxglove.Vector3", {{"x", number()}, {"y", n
 json pose_schema() {
   return object("foxglove.Pose",
                 {{"position", vec3_schema()},
-                 {"orientation",
-                  object("foxglove.Quaternion", {{"x", number()}, {"y", number()}, {"z", number()}, {"w", number()}})}});
+                 {"orientation", object("foxglove.Quaternion",
+                                        {{"x", number()}, {"y", number()}, {"z", number()}, {"w", number()}})}});
 }
 json color_schema() {
   return object("foxglove.Color", {{"r", number()}, {"g", number()}, {"b", number()}, {"a", number()}});
@@ -70,9 +70,10 @@ json any_object_array() { return array_of({{"type", "object"}}); }
 
 }  // namespace
 
-json scene_update(const morphology_t& morphology, const pose_t& pose, const Eigen::Vector3d& target,
-                  uint64_t time_ns, const SceneStyleParams& style) {
-  if (pose.num_spheres != morphology.num_spheres || static_cast<int32_t>(morphology.spheres.size()) != morphology.num_spheres)
+json scene_update(const morphology_t& morphology, const pose_t& pose, const Eigen::Vector3d& target, uint64_t time_ns,
+                  const SceneStyleParams& style) {
+  if (pose.num_spheres != morphology.num_spheres ||
+      static_cast<int32_t>(morphology.spheres.size()) != morphology.num_spheres)
     throw std::invalid_argument("pose of genome " + std::to_string(pose.genome_id) + " has " +
                                 std::to_string(pose.num_spheres) + " spheres, its morphology " +
                                 std::to_string(morphology.num_spheres));
@@ -89,8 +90,10 @@ json scene_update(const morphology_t& morphology, const pose_t& pose, const Eige
                                 {"size", vec3(d, d, d)},
                                 {"color", leaves[i] ? leaf_colour() : inner_colour()}});
   }
-  const double x0 = std::min(0.0, target.x()) - style.ground_margin, x1 = std::max(0.0, target.x()) + style.ground_margin;
-  const double y0 = std::min(0.0, target.y()) - style.ground_margin, y1 = std::max(0.0, target.y()) + style.ground_margin;
+  const double x0 = std::min(0.0, target.x()) - style.ground_margin,
+               x1 = std::max(0.0, target.x()) + style.ground_margin;
+  const double y0 = std::min(0.0, target.y()) - style.ground_margin,
+               y1 = std::max(0.0, target.y()) + style.ground_margin;
   json ground = entity("ground", time_ns);
   ground["cubes"].push_back({{"pose", identity_pose((x0 + x1) / 2, (y0 + y1) / 2, -style.ground_thickness / 2)},
                              {"size", vec3(x1 - x0, y1 - y0, style.ground_thickness)},
@@ -105,8 +108,10 @@ json scene_update(const morphology_t& morphology, const pose_t& pose, const Eige
 
 json scene_update_schema() {
   const json primitive_array = any_object_array();
-  json sphere = object("foxglove.SpherePrimitive", {{"pose", pose_schema()}, {"size", vec3_schema()}, {"color", color_schema()}});
-  json cube = object("foxglove.CubePrimitive", {{"pose", pose_schema()}, {"size", vec3_schema()}, {"color", color_schema()}});
+  json sphere =
+      object("foxglove.SpherePrimitive", {{"pose", pose_schema()}, {"size", vec3_schema()}, {"color", color_schema()}});
+  json cube =
+      object("foxglove.CubePrimitive", {{"pose", pose_schema()}, {"size", vec3_schema()}, {"color", color_schema()}});
   json entity_schema = object(
       "foxglove.SceneEntity",
       {{"timestamp", time_schema(false)},
@@ -114,7 +119,8 @@ json scene_update_schema() {
        {"id", {{"type", "string"}}},
        {"lifetime", time_schema(true)},
        {"frame_locked", {{"type", "boolean"}}},
-       {"metadata", array_of(object("foxglove.KeyValuePair", {{"key", {{"type", "string"}}}, {"value", {{"type", "string"}}}}))},
+       {"metadata",
+        array_of(object("foxglove.KeyValuePair", {{"key", {{"type", "string"}}}, {"value", {{"type", "string"}}}}))},
        {"arrows", primitive_array},
        {"cubes", array_of(cube)},
        {"spheres", array_of(sphere)},
@@ -123,8 +129,9 @@ json scene_update_schema() {
        {"triangles", primitive_array},
        {"texts", primitive_array},
        {"models", primitive_array}});
-  json deletion = object("foxglove.SceneEntityDeletion",
-                         {{"timestamp", time_schema(false)}, {"type", {{"type", "integer"}}}, {"id", {{"type", "string"}}}});
+  json deletion =
+      object("foxglove.SceneEntityDeletion",
+             {{"timestamp", time_schema(false)}, {"type", {{"type", "integer"}}}, {"id", {{"type", "string"}}}});
   return object(kSceneUpdateSchemaName, {{"deletions", array_of(deletion)}, {"entities", array_of(entity_schema)}});
 }
 

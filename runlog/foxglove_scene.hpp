@@ -15,9 +15,9 @@
 namespace robozoo {
 
 struct SceneStyleParams {
-  double ground_margin = 10.0;    ///< ground reaches this far beyond the start and the target (m)
-  double ground_thickness = 0.02; ///< thickness of the ground cube, its top at z = 0 (m)
-  double target_radius = 0.25;    ///< radius of the target's sphere (m)
+  double ground_margin = 10.0;     ///< ground reaches this far beyond the start and the target (m)
+  double ground_thickness = 0.02;  ///< thickness of the ground cube, its top at z = 0 (m)
+  double target_radius = 0.25;     ///< radius of the target's sphere (m)
 };
 
 /// Schema name and encoding as Foxglove expects them.

@@ -28,7 +28,8 @@ std::vector<Field> struct_fields(const std::string& name, const std::string& sou
   std::smatch body;
   if (!std::regex_search(text, body, body_re)) throw std::invalid_argument("lcmtypes: no struct " + name);
   std::vector<Field> fields;
-  static const std::regex decl_re("^\\s*([A-Za-z_][A-Za-z0-9_.]*)\\s+([A-Za-z_][A-Za-z0-9_]*)((\\s*\\[[^\\]]+\\])*)\\s*$");
+  static const std::regex decl_re(
+      "^\\s*([A-Za-z_][A-Za-z0-9_.]*)\\s+([A-Za-z_][A-Za-z0-9_]*)((\\s*\\[[^\\]]+\\])*)\\s*$");
   static const std::regex dim_re("\\[\\s*([^\\]\\s]+)\\s*\\]");
   const std::string declarations = body[1].str();
   size_t start = 0;

@@ -60,8 +60,7 @@ bool fill(const LogRecord& r, IndexedEvent& e, std::string& why) {
       e.sim_time = m.sim_time;
       return true;
     }
-    default:
-      return true;
+    default: return true;
   }
 }
 
@@ -70,8 +69,8 @@ bool fill(const LogRecord& r, IndexedEvent& e, std::string& why) {
 LogIndex index_log(const LogContents& log) {
   LogIndex ix;
   std::map<std::pair<std::string, int64_t>, size_t> latest_genome;  // (run, id) -> genomes index
-  std::map<std::string, size_t> latest_run;                          // run -> events index
-  std::map<std::pair<std::string, int32_t>, int64_t> champion_of;    // (run, generation) -> id
+  std::map<std::string, size_t> latest_run;                         // run -> events index
+  std::map<std::pair<std::string, int32_t>, int64_t> champion_of;   // (run, generation) -> id
   auto problem = [&](size_t event, const std::string& what) {
     const LogRecord& r = log.records[ix.events[event].record];
     ix.problems.push_back({static_cast<int64_t>(event), r.eventnum, r.channel, what});
@@ -92,16 +91,12 @@ LogIndex index_log(const LogContents& log) {
     ix.events.push_back(e);
     const size_t k = ix.events.size() - 1;
     switch (e.kind) {
-      case EventKind::Foreign:
-        ++ix.foreign_events;
-        break;
+      case EventKind::Foreign: ++ix.foreign_events; break;
       case EventKind::Run:
         ix.run_events.push_back(k);
         latest_run[e.run_id] = k;
         break;
-      case EventKind::Generation:
-        champion_of[{e.run_id, e.generation}] = e.genome_id;
-        break;
+      case EventKind::Generation: champion_of[{e.run_id, e.generation}] = e.genome_id; break;
       case EventKind::Genome: {
         LoggedGenome g;
         g.run_id = e.run_id;
@@ -134,8 +129,7 @@ LogIndex index_log(const LogContents& log) {
         }
         break;
       }
-      case EventKind::Undecodable:
-        break;
+      case EventKind::Undecodable: break;
     }
   }
   for (auto& g : ix.genomes) {

@@ -24,13 +24,13 @@ enum class EventKind : int8_t {
 
 /// One event of the log with the fields replay needs to find its way.
 struct IndexedEvent {
-  size_t record = 0;          ///< index in LogContents::records
+  size_t record = 0;  ///< index in LogContents::records
   EventKind kind = EventKind::Foreign;
-  std::string run_id;         ///< robozoo kinds
-  int32_t generation = -1;    ///< Generation, Genome, Morphology, Pose
-  int64_t genome_id = -1;     ///< Genome, Morphology, Pose; Generation: the champion's id
-  int32_t step = -1;          ///< Pose: physics step (count)
-  double sim_time = 0.0;      ///< Pose: simulated time (s)
+  std::string run_id;       ///< robozoo kinds
+  int32_t generation = -1;  ///< Generation, Genome, Morphology, Pose
+  int64_t genome_id = -1;   ///< Genome, Morphology, Pose; Generation: the champion's id
+  int32_t step = -1;        ///< Pose: physics step (count)
+  double sim_time = 0.0;    ///< Pose: simulated time (s)
 };
 
 /// A genome message with the morphology and poses logged for it.
@@ -50,7 +50,7 @@ struct InputProblem {
   int64_t event = -1;     ///< index in LogIndex::events, -1 for the log as a whole
   int64_t eventnum = -1;  ///< the event's number in the log, -1 if none
   std::string channel;
-  std::string what;       ///< one sentence
+  std::string what;  ///< one sentence
 };
 
 struct LogIndex {
@@ -58,7 +58,7 @@ struct LogIndex {
   std::vector<LoggedGenome> genomes;  ///< in log order of their genome messages
   std::vector<size_t> run_events;     ///< every ROBOZOO_RUN event
   std::vector<InputProblem> problems;
-  size_t foreign_events = 0;          ///< events of channels robozoo does not own (count)
+  size_t foreign_events = 0;  ///< events of channels robozoo does not own (count)
   /// Champions only (or every genome with `all`), in log order.
   std::vector<const LoggedGenome*> to_check(bool all) const;
   /// The genome logged last with this id (in `run_id` when not empty); nullptr if none.

@@ -12,7 +12,7 @@ namespace robozoo {
 namespace {
 
 constexpr int64_t kHeaderBytes = 4 + 8 + 8 + 4 + 4;  // sync, eventnum, timestamp, channellen, datalen
-constexpr int32_t kMaxChannelLength = 999;         // LCM's own limit for log channel names
+constexpr int32_t kMaxChannelLength = 999;           // LCM's own limit for log channel names
 
 uint32_t be32(const uint8_t* p) {
   return (uint32_t(p[0]) << 24) | (uint32_t(p[1]) << 16) | (uint32_t(p[2]) << 8) | uint32_t(p[3]);

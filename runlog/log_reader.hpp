@@ -24,19 +24,19 @@ namespace robozoo {
 struct LogDamage {
   enum class Kind { Garbage, Truncated, MissingEvents };
   Kind kind = Kind::Garbage;
-  int64_t offset = 0;      ///< byte offset in the file where it starts (bytes)
-  int64_t bytes = 0;       ///< bytes skipped (Garbage, Truncated), 0 for MissingEvents (bytes)
-  int64_t after_event = -1;  ///< event number of the last good event before it, -1 if none
-  int64_t next_event = -1;   ///< MissingEvents: the event number that follows after_event
+  int64_t offset = 0;            ///< byte offset in the file where it starts (bytes)
+  int64_t bytes = 0;             ///< bytes skipped (Garbage, Truncated), 0 for MissingEvents (bytes)
+  int64_t after_event = -1;      ///< event number of the last good event before it, -1 if none
+  int64_t next_event = -1;       ///< MissingEvents: the event number that follows after_event
   std::string describe() const;  ///< one sentence, with offsets and event numbers
 };
 
 struct ScannedLog {
-  LogContents contents;            ///< the events that could be read, in file order; event_bytes is
-                                   ///< what they take, truncated says the last event is cut
-  std::vector<int64_t> offsets;    ///< byte offset of each event's sync word (parallel to records)
-  std::vector<LogDamage> damage;   ///< in file order; empty for an intact log
-  int64_t end_of_events = 0;       ///< byte offset just after the last complete event (bytes)
+  LogContents contents;           ///< the events that could be read, in file order; event_bytes is
+                                  ///< what they take, truncated says the last event is cut
+  std::vector<int64_t> offsets;   ///< byte offset of each event's sync word (parallel to records)
+  std::vector<LogDamage> damage;  ///< in file order; empty for an intact log
+  int64_t end_of_events = 0;      ///< byte offset just after the last complete event (bytes)
   /// Bytes of the file that are no complete event (garbage and a cut last event).
   int64_t damaged_bytes() const { return contents.file_bytes - contents.event_bytes; }
 };

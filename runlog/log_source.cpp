@@ -31,8 +31,7 @@ LoadedLog load_log(const std::string& path, const LoadOptions& options) {
                              " bytes: not a robozoo-evolve log");
   const bool truncated = scanned.damaged_bytes() > 0;
   if (truncated && !options.allow_truncated)
-    throw std::runtime_error(path + ": the log is truncated or damaged (" +
-                             std::to_string(scanned.damaged_bytes()) +
+    throw std::runtime_error(path + ": the log is truncated or damaged (" + std::to_string(scanned.damaged_bytes()) +
                              " bytes are not complete events; " + std::to_string(contents.records.size()) +
                              " events are); pass --allow-truncated to use the complete events");
   CollectorOptions co;

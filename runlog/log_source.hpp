@@ -19,8 +19,8 @@ struct LoadOptions {
 struct LoadedLog {
   std::string path;
   std::unique_ptr<MessageCollector> collector;  ///< one per log: run ids may repeat across logs
-  bool truncated = false;             ///< some bytes are no complete event (garbage or a cut end)
-  std::vector<LogDamage> damage;      ///< where, as scan_event_log found it
+  bool truncated = false;                       ///< some bytes are no complete event (garbage or a cut end)
+  std::vector<LogDamage> damage;                ///< where, as scan_event_log found it
   std::vector<const RunRecord*> runs() const;
 };
 

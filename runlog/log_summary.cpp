@@ -93,21 +93,22 @@ nlohmann::json to_json(const LogSummary& s) {
   nlohmann::json channels = nlohmann::json::object(), runs = nlohmann::json::array();
   for (const auto& [name, c] : s.channels) channels[name] = {{"messages", c.messages}, {"bytes", c.bytes}};
   for (const RunSummaryLine& r : s.runs)
-    runs.push_back({{"run_id", r.run_id},
-                    {"regime", r.regime},
-                    {"seed", r.seed},
-                    {"software_version", r.software_version},
-                    {"population", r.population},
-                    {"generations_requested", r.generations_requested},
-                    {"steps", r.steps},
-                    {"generations", r.generations},
-                    {"first_generation", r.first_generation},
-                    {"last_generation", r.last_generation},
-                    {"champions", r.champions},
-                    {"pose_streams", r.pose_streams},
-                    {"best", {{"genome_id", r.best_genome}, {"generation", r.best_generation}, {"fitness", r.best_fitness}}}});
-  return {{"path", s.path},     {"file_bytes", s.file_bytes}, {"messages", s.events},         {"channels", channels},
-          {"runs", runs},       {"damage", s.damage},         {"bad_messages", s.bad_messages}, {"problems", s.problems}};
+    runs.push_back(
+        {{"run_id", r.run_id},
+         {"regime", r.regime},
+         {"seed", r.seed},
+         {"software_version", r.software_version},
+         {"population", r.population},
+         {"generations_requested", r.generations_requested},
+         {"steps", r.steps},
+         {"generations", r.generations},
+         {"first_generation", r.first_generation},
+         {"last_generation", r.last_generation},
+         {"champions", r.champions},
+         {"pose_streams", r.pose_streams},
+         {"best", {{"genome_id", r.best_genome}, {"generation", r.best_generation}, {"fitness", r.best_fitness}}}});
+  return {{"path", s.path}, {"file_bytes", s.file_bytes}, {"messages", s.events},           {"channels", channels},
+          {"runs", runs},   {"damage", s.damage},         {"bad_messages", s.bad_messages}, {"problems", s.problems}};
 }
 
 }  // namespace robozoo

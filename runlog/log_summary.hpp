@@ -24,10 +24,10 @@ struct RunSummaryLine {
   int64_t seed = 0;
   int32_t population = 0, generations_requested = 0, steps = 0;
   int32_t first_generation = -1, last_generation = -1;
-  int64_t generations = 0;         ///< generation messages (count)
-  int64_t champions = 0;           ///< distinct champions (count)
-  int64_t pose_streams = 0;        ///< genomes with poses (count)
-  int64_t best_genome = -1;        ///< the best champion's id
+  int64_t generations = 0;   ///< generation messages (count)
+  int64_t champions = 0;     ///< distinct champions (count)
+  int64_t pose_streams = 0;  ///< genomes with poses (count)
+  int64_t best_genome = -1;  ///< the best champion's id
   int32_t best_generation = -1;
   double best_fitness = 0.0;
 };

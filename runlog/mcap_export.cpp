@@ -14,9 +14,9 @@ namespace robozoo {
 
 namespace {
 
-const char* const kStatsFields[] = {"generation",   "evaluations",         "best_fitness", "mean_fitness",
+const char* const kStatsFields[] = {"generation",     "evaluations",         "best_fitness", "mean_fitness",
                                     "stderr_fitness", "best_so_far_fitness", "num_species",  "n_completed",
-                                    "eval_seconds", "generation_seconds"};
+                                    "eval_seconds",   "generation_seconds"};
 
 // Generations a morphology is kept for the poses that may still follow it.
 constexpr int32_t kMorphologyGenerationsKept = 2;
@@ -82,7 +82,7 @@ void McapExporter::add(const LogRecord& r) {
     const std::string& run_id = message.at("run_id").get_ref<const std::string&>();
     for (auto it = morphologies_.begin(); it != morphologies_.end();)
       it = it->first.first == run_id && it->second.generation + kMorphologyGenerationsKept < g ? morphologies_.erase(it)
-                                                                                              : std::next(it);
+                                                                                               : std::next(it);
     writer_.write(topic(options_.stats_topic, "robozoo.generation_stats", generation_stats_schema()), t, t,
                   generation_stats(message).dump());
     ++report_.messages[options_.stats_topic];

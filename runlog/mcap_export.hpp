@@ -24,8 +24,8 @@ struct ExportOptions {
 
 struct ExportReport {
   std::map<std::string, int64_t> messages;  ///< per topic
-  int64_t skipped = 0;        ///< events of other channels, or that do not decode (count)
-  int64_t poses_unshown = 0;  ///< poses without a matching morphology: no SceneUpdate (count)
+  int64_t skipped = 0;                      ///< events of other channels, or that do not decode (count)
+  int64_t poses_unshown = 0;                ///< poses without a matching morphology: no SceneUpdate (count)
   int64_t chunks = 0;
 };
 

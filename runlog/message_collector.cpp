@@ -22,11 +22,14 @@ bool decode(const void* data, size_t size, T& out, std::string* why) {
 
 std::string morphology_problem(const morphology_t& m) {
   if (m.num_spheres < 1) return "morphology has no sphere";
-  if (static_cast<int32_t>(m.spheres.size()) != m.num_spheres) return "morphology sphere array size differs from num_spheres";
+  if (static_cast<int32_t>(m.spheres.size()) != m.num_spheres)
+    return "morphology sphere array size differs from num_spheres";
   if (m.num_bodies < 1 || m.num_bodies > m.num_spheres)
-    return "morphology has " + std::to_string(m.num_bodies) + " bodies for " + std::to_string(m.num_spheres) + " spheres";
+    return "morphology has " + std::to_string(m.num_bodies) + " bodies for " + std::to_string(m.num_spheres) +
+           " spheres";
   if (m.num_neurons < 0 || m.num_sensors < 0 || static_cast<int32_t>(m.tau.size()) != m.num_neurons ||
-      static_cast<int32_t>(m.omega.size()) != m.num_neurons || static_cast<int32_t>(m.sensor_sphere.size()) != m.num_sensors)
+      static_cast<int32_t>(m.omega.size()) != m.num_neurons ||
+      static_cast<int32_t>(m.sensor_sphere.size()) != m.num_sensors)
     return "morphology neuron or sensor arrays differ from their counts";
   for (int32_t i = 0; i < m.num_spheres; ++i) {
     const sphere_t& s = m.spheres[static_cast<size_t>(i)];
@@ -36,7 +39,8 @@ std::string morphology_problem(const morphology_t& m) {
     if (!(s.radius > 0) || !std::isfinite(s.radius) || !finite3(s.center))
       return "sphere " + std::to_string(i) + " has a bad radius or centre";
     if (s.body < 0 || s.body >= m.num_bodies)
-      return "sphere " + std::to_string(i) + " is in body " + std::to_string(s.body) + " of " + std::to_string(m.num_bodies);
+      return "sphere " + std::to_string(i) + " is in body " + std::to_string(s.body) + " of " +
+             std::to_string(m.num_bodies);
   }
   for (int32_t k = 0; k < m.num_sensors; ++k)
     if (m.sensor_sphere[static_cast<size_t>(k)] < 0 || m.sensor_sphere[static_cast<size_t>(k)] >= m.num_spheres)
@@ -51,7 +55,8 @@ std::string pose_problem(const pose_t& p, const morphology_t& m) {
            std::to_string(p.num_bodies) + " bodies, " + std::to_string(p.num_neurons) + " neurons, " +
            std::to_string(p.num_sensors) + " sensors; its morphology " + std::to_string(m.num_spheres) + ", " +
            std::to_string(m.num_bodies) + ", " + std::to_string(m.num_neurons) + ", " + std::to_string(m.num_sensors);
-  if (static_cast<int32_t>(p.sphere_center.size()) != p.num_spheres) return "pose sphere array differs from num_spheres";
+  if (static_cast<int32_t>(p.sphere_center.size()) != p.num_spheres)
+    return "pose sphere array differs from num_spheres";
   if (p.step < 0 || !std::isfinite(p.sim_time)) return "pose has a bad step or time";
   for (const auto& c : p.sphere_center)
     if (!finite3(c.data())) return "pose of genome " + std::to_string(p.genome_id) + " has a non-finite centre";
@@ -151,7 +156,8 @@ void MessageCollector::handle_generation(const void* data, size_t size) {
     ++stats_.before_run;
     return;
   }
-  if (m.generation < 0) return problem(stats_.inconsistent, "generation_t with generation " + std::to_string(m.generation));
+  if (m.generation < 0)
+    return problem(stats_.inconsistent, "generation_t with generation " + std::to_string(m.generation));
   close_streams(*run, nullptr);
   run->generations.push_back(std::move(m));
   ++stats_.accepted;
@@ -194,7 +200,8 @@ void MessageCollector::handle_morphology(const void* data, size_t size) {
   GenomeRecord* g = run->find(m.genome_id);
   if (!g) return problem(stats_.orphans, "morphology of genome " + std::to_string(m.genome_id) + " before its genome");
   const std::string bad = morphology_problem(m);
-  if (!bad.empty()) return problem(stats_.inconsistent, "morphology of genome " + std::to_string(m.genome_id) + ": " + bad);
+  if (!bad.empty())
+    return problem(stats_.inconsistent, "morphology of genome " + std::to_string(m.genome_id) + ": " + bad);
   g->morphology = std::move(m);
   g->has_morphology = true;
   ++stats_.accepted;

@@ -25,19 +25,19 @@
 namespace robozoo {
 
 struct CollectorOptions {
-  bool keep_poses = true;   ///< store pose_t messages (live mode releases them after use)
-  size_t max_problems = 20; ///< problem descriptions kept (the counts are complete)
+  bool keep_poses = true;    ///< store pose_t messages (live mode releases them after use)
+  size_t max_problems = 20;  ///< problem descriptions kept (the counts are complete)
 };
 
 struct CollectorStats {
-  int64_t messages = 0;           ///< all messages seen (count)
-  int64_t accepted = 0;           ///< decoded, consistent and stored (count)
-  int64_t before_run = 0;         ///< of a run whose ROBOZOO_RUN had not arrived yet: skipped (count)
-  int64_t undecodable = 0;        ///< failed safe_decode (count)
-  int64_t inconsistent = 0;       ///< decoded but sizes or values do not add up (count)
-  int64_t orphans = 0;            ///< morphology or pose of a genome never seen (count)
-  int64_t other_channels = 0;     ///< not a ROBOZOO_* channel, e.g. LCM_SELF_TEST (count)
-  int64_t streams_completed = 0;  ///< pose streams closed (count)
+  int64_t messages = 0;               ///< all messages seen (count)
+  int64_t accepted = 0;               ///< decoded, consistent and stored (count)
+  int64_t before_run = 0;             ///< of a run whose ROBOZOO_RUN had not arrived yet: skipped (count)
+  int64_t undecodable = 0;            ///< failed safe_decode (count)
+  int64_t inconsistent = 0;           ///< decoded but sizes or values do not add up (count)
+  int64_t orphans = 0;                ///< morphology or pose of a genome never seen (count)
+  int64_t other_channels = 0;         ///< not a ROBOZOO_* channel, e.g. LCM_SELF_TEST (count)
+  int64_t streams_completed = 0;      ///< pose streams closed (count)
   std::vector<std::string> problems;  ///< the first few problems, described
   int64_t rejected() const { return undecodable + inconsistent + orphans; }
 };

@@ -8,10 +8,10 @@ namespace robozoo {
 namespace {
 
 nlohmann::json fields(const run_t& m) {
-  return {{"utime", m.utime},           {"run_id", m.run_id},   {"software_version", m.software_version},
-          {"seed", m.seed},             {"regime", m.regime},   {"population", m.population},
-          {"generations", m.generations}, {"steps", m.steps},   {"dt", m.dt},
-          {"config_json", m.config_json}};
+  return {
+      {"utime", m.utime},   {"run_id", m.run_id},          {"software_version", m.software_version}, {"seed", m.seed},
+      {"regime", m.regime}, {"population", m.population},  {"generations", m.generations},           {"steps", m.steps},
+      {"dt", m.dt},         {"config_json", m.config_json}};
 }
 
 nlohmann::json fields(const generation_t& m) {
@@ -38,16 +38,26 @@ nlohmann::json fields(const generation_t& m) {
 
 nlohmann::json fields(const cppn_genome_t& m) {
   nlohmann::json nodes = nlohmann::json::array(), links = nlohmann::json::array();
-  for (const cppn_node_t& n : m.nodes) nodes.push_back({{"id", n.id}, {"kind", n.kind}, {"activation", n.activation}, {"position", n.position}});
+  for (const cppn_node_t& n : m.nodes)
+    nodes.push_back({{"id", n.id}, {"kind", n.kind}, {"activation", n.activation}, {"position", n.position}});
   for (const link_t& l : m.links)
     links.push_back({{"innovation", l.innovation},
                      {"from_node", l.from_node},
                      {"to_node", l.to_node},
                      {"weight", l.weight},
                      {"enabled", l.enabled != 0}});
-  return {{"utime", m.utime},   {"run_id", m.run_id},   {"generation", m.generation}, {"genome_id", m.genome_id},
-          {"species_id", m.species_id}, {"fitness", m.fitness}, {"r_term", m.r_term},   {"d_term", m.d_term},
-          {"outcome", m.outcome}, {"num_nodes", m.num_nodes}, {"nodes", nodes},     {"num_links", m.num_links},
+  return {{"utime", m.utime},
+          {"run_id", m.run_id},
+          {"generation", m.generation},
+          {"genome_id", m.genome_id},
+          {"species_id", m.species_id},
+          {"fitness", m.fitness},
+          {"r_term", m.r_term},
+          {"d_term", m.d_term},
+          {"outcome", m.outcome},
+          {"num_nodes", m.num_nodes},
+          {"nodes", nodes},
+          {"num_links", m.num_links},
           {"links", links}};
 }
 
@@ -111,8 +121,7 @@ bool convert(const void* data, size_t size, nlohmann::json& out, std::string& wh
 
 }  // namespace
 
-bool message_to_json(const std::string& channel, const void* data, size_t size, nlohmann::json& out,
-                     std::string& why) {
+bool message_to_json(const std::string& channel, const void* data, size_t size, nlohmann::json& out, std::string& why) {
   why.clear();
   if (channel == kChannelRun) return convert<run_t>(data, size, out, why);
   if (channel == kChannelGeneration) return convert<generation_t>(data, size, out, why);

@@ -34,8 +34,7 @@ size_t start_event(const LogIndex& index, int32_t g) {
 }  // namespace
 
 std::vector<PlannedEvent> plan_pass(const LogContents& log, const LogIndex& index, const PlayOptions& o) {
-  if (!(o.speed > 0.0) || !std::isfinite(o.speed))
-    throw std::invalid_argument("--speed must be a positive number");
+  if (!(o.speed > 0.0) || !std::isfinite(o.speed)) throw std::invalid_argument("--speed must be a positive number");
   std::regex channels;
   try {
     channels = std::regex(o.channels, std::regex::ECMAScript);
@@ -49,7 +48,10 @@ std::vector<PlannedEvent> plan_pass(const LogContents& log, const LogIndex& inde
   std::map<Key, size_t> latest_genome, latest_morphology;
   std::set<std::string> sent_run;
   std::set<Key> sent_genome, sent_morphology;
-  struct LastPose { double t; double sim_time; };
+  struct LastPose {
+    double t;
+    double sim_time;
+  };
   std::map<Key, LastPose> last_pose;
   std::map<std::string, bool> matches;  // channel -> selected (one regex match per channel name)
 
@@ -99,8 +101,9 @@ std::vector<PlannedEvent> plan_pass(const LogContents& log, const LogIndex& inde
     if (e.kind == EventKind::Morphology) latest_morphology[key] = i;
   }
   if (plan.empty())
-    throw std::invalid_argument("no event of the log matches --channels '" + o.channels + "'" +
-                                (o.start_generation > 0 ? " from generation " + std::to_string(o.start_generation) : ""));
+    throw std::invalid_argument(
+        "no event of the log matches --channels '" + o.channels + "'" +
+        (o.start_generation > 0 ? " from generation " + std::to_string(o.start_generation) : ""));
   return plan;
 }
 

@@ -35,9 +35,9 @@ struct PlayOptions {
 
 /// One event to send in a pass.
 struct PlannedEvent {
-  size_t record = 0;     ///< index in LogContents::records
-  double at = 0.0;       ///< time after the start of the pass (s of wall time, speed applied)
-  bool state = false;    ///< sent by the state-first rule (not at its own place in the log)
+  size_t record = 0;   ///< index in LogContents::records
+  double at = 0.0;     ///< time after the start of the pass (s of wall time, speed applied)
+  bool state = false;  ///< sent by the state-first rule (not at its own place in the log)
 };
 
 /// The events of one pass, in sending order. Throws std::invalid_argument for a

@@ -11,7 +11,7 @@
 namespace robozoo {
 
 struct ProgressBarParams {
-  int width = 30;                 ///< cells of the bar (count)
+  int width = 30;                   ///< cells of the bar (count)
   double min_redraw_seconds = 0.1;  ///< at most one redraw per this interval, the last always (s)
 };
 

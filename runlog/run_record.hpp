@@ -31,8 +31,8 @@ struct GenomeRecord {
 };
 
 struct RunRecord {
-  run_t run;                          ///< the latest ROBOZOO_RUN of this run
-  std::string source;                 ///< the log or URL it came from
+  run_t run;           ///< the latest ROBOZOO_RUN of this run
+  std::string source;  ///< the log or URL it came from
   std::vector<generation_t> generations;
   std::vector<std::unique_ptr<GenomeRecord>> genomes;  ///< arrival order (stable addresses)
   std::map<int64_t, GenomeRecord*> by_id;

@@ -64,9 +64,8 @@ std::vector<Pick> top_champions(const std::vector<const RunRecord*>& runs, int n
     for (const Pick& p : champions(*r))
       if (seen.insert(gene_hash(p.genome->genome)).second) all.push_back(p);
   }
-  std::stable_sort(all.begin(), all.end(), [](const Pick& a, const Pick& b) {
-    return a.genome->genome.fitness > b.genome->genome.fitness;
-  });
+  std::stable_sort(all.begin(), all.end(),
+                   [](const Pick& a, const Pick& b) { return a.genome->genome.fitness > b.genome->genome.fitness; });
   if (n >= 0 && static_cast<size_t>(n) < all.size()) all.resize(static_cast<size_t>(n));
   return all;
 }

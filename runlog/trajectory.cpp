@@ -49,7 +49,8 @@ Trajectory trajectory_from_poses(const std::vector<pose_t>& poses, size_t num_sp
   return tr;
 }
 
-Trajectory simulate_trajectory(const run_t& run, const cppn_genome_t& genome, const morphology_t& morphology, int every) {
+Trajectory simulate_trajectory(const run_t& run, const cppn_genome_t& genome, const morphology_t& morphology,
+                               int every) {
   if (every < 1) throw std::invalid_argument("simulate_trajectory: every must be >= 1");
   RunConfig config;
   try {

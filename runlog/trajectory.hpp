@@ -17,12 +17,12 @@
 namespace robozoo {
 
 struct Trajectory {
-  std::vector<int> step;        ///< physics step of each sample (count)
-  std::vector<double> time;     ///< simulated time of each sample (s), increasing
+  std::vector<int> step;                              ///< physics step of each sample (count)
+  std::vector<double> time;                           ///< simulated time of each sample (s), increasing
   std::vector<std::vector<Eigen::Vector3d>> centers;  ///< per sample, per sphere (m)
-  std::vector<std::vector<double>> neurons;  ///< per sample, CTRNN outputs (dimensionless)
-  std::vector<std::vector<double>> sensors;  ///< per sample, sensor values in morphology order (dimensionless)
-  bool resimulated = false;     ///< made by re-simulation rather than read from poses
+  std::vector<std::vector<double>> neurons;           ///< per sample, CTRNN outputs (dimensionless)
+  std::vector<std::vector<double>> sensors;           ///< per sample, sensor values in morphology order (dimensionless)
+  bool resimulated = false;                           ///< made by re-simulation rather than read from poses
 
   bool empty() const { return time.empty(); }
   double start_time() const { return time.front(); }
@@ -56,8 +56,7 @@ const GenomeRecord* logged_pose_source(const RunRecord& run, const GenomeRecord&
 /// std::invalid_argument when the genome has no morphology,
 /// std::runtime_error when re-simulation cannot reproduce it. `resimulate`:
 /// ignore logged poses.
-Trajectory genome_trajectory(const RunRecord& run, const GenomeRecord& genome, bool resimulate = false,
-                             int every = 1);
+Trajectory genome_trajectory(const RunRecord& run, const GenomeRecord& genome, bool resimulate = false, int every = 1);
 
 /// The target position of a run (sim.target_x/y/z of run_t.config_json).
 /// Throws std::invalid_argument when the configuration does not parse.

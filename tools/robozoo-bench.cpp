@@ -119,7 +119,8 @@ BeforeAfter bench_random(Regime regime, const RunConfig& config, int want, const
       if (!grow(probe, config.eval.growth).simulate) continue;
     }
     measure_both(g, config.eval, baseline, ba);
-    if (t.genomes % 20 == 0) std::cerr << "  " << regime_name(regime) << ": " << t.genomes << "/" << want << "\r" << std::flush;
+    if (t.genomes % 20 == 0)
+      std::cerr << "  " << regime_name(regime) << ": " << t.genomes << "/" << want << "\r" << std::flush;
   }
   t.drawn = ba.libm.drawn = drawn;
   std::cerr << "\n";
@@ -131,7 +132,8 @@ BeforeAfter bench_population(const std::vector<Genome>& genomes, const RunConfig
   Totals& t = ba.own;
   for (const Genome& g : genomes) {
     measure_both(g, config.eval, baseline, ba);
-    if (t.genomes % 10 == 0) std::cerr << "  log population: " << t.genomes << "/" << genomes.size() << "\r" << std::flush;
+    if (t.genomes % 10 == 0)
+      std::cerr << "  log population: " << t.genomes << "/" << genomes.size() << "\r" << std::flush;
   }
   t.drawn = ba.libm.drawn = t.genomes;
   std::cerr << "\n";
@@ -182,11 +184,12 @@ void print_one(const std::string& name, const nlohmann::json& j) {
               j["evaluations_per_second"].get<double>(), j["mean_evaluation_ms"].get<double>(),
               j["cppn_queries_per_robot"].get<double>(), j["cppn_query_us"].get<double>());
   const auto& s = j["share"];
-  std::printf("  time: decode %.1f%%, CPPN queries %.1f%%, rest of growth %.1f%%, controller+sensors %.1f%%, "
-              "ODE stepping %.1f%%, bookkeeping %.1f%%\n",
-              100 * s["cppn_decode"].get<double>(), 100 * s["cppn_queries"].get<double>(),
-              100 * s["growth_other"].get<double>(), 100 * s["controller_sensors"].get<double>(),
-              100 * s["ode_stepping"].get<double>(), 100 * s["bookkeeping"].get<double>());
+  std::printf(
+      "  time: decode %.1f%%, CPPN queries %.1f%%, rest of growth %.1f%%, controller+sensors %.1f%%, "
+      "ODE stepping %.1f%%, bookkeeping %.1f%%\n",
+      100 * s["cppn_decode"].get<double>(), 100 * s["cppn_queries"].get<double>(),
+      100 * s["growth_other"].get<double>(), 100 * s["controller_sensors"].get<double>(),
+      100 * s["ode_stepping"].get<double>(), 100 * s["bookkeeping"].get<double>());
   std::printf("  full evaluation / bare ODE loop = %.3f (%.2f s vs %.2f s; ODE stepping in the evaluation %.2f s)\n",
               j["ratio_full_to_bare_ode"].get<double>(), j["full_evaluation_seconds"].get<double>(),
               j["bare_ode_seconds"].get<double>(), j["stage_seconds"]["ode_stepping"].get<double>());
@@ -209,14 +212,17 @@ nlohmann::json report_both(const BeforeAfter& ba, bool baseline) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"robozoo-bench: evaluations per second on one core, where the time goes, and the ratio of a full\n"
-               "evaluation to a bare ODE loop over the same bodies and joints (the engine's limit)."};
+  CLI::App app{
+      "robozoo-bench: evaluations per second on one core, where the time goes, and the ratio of a full\n"
+      "evaluation to a bare ODE loop over the same bodies and joints (the engine's limit)."};
   int genomes = 200, rounds = 30, max_draws = 200000;
   uint64_t seed = 1;
   bool json = false, log_only = false, no_baseline = false;
   std::string config_file, log_path, regime_opt = "both";
-  app.add_option("--genomes", genomes, "simulated random genomes per regime (default 200)")->check(CLI::Range(1, 100000));
-  app.add_option("--mutations", rounds, "mutation rounds of each random genome (default 30)")->check(CLI::Range(0, 10000));
+  app.add_option("--genomes", genomes, "simulated random genomes per regime (default 200)")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--mutations", rounds, "mutation rounds of each random genome (default 30)")
+      ->check(CLI::Range(0, 10000));
   app.add_option("--seed", seed, "seed of the genome set (default 1)");
   app.add_option("--max-draws", max_draws, "give up after drawing this many genomes per regime");
   app.add_option("--log", log_path,
@@ -228,8 +234,7 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_file, "configuration file (.json or .toml) for the random genomes");
   app.add_flag("--no-baseline", no_baseline,
                "measure robozoo's activations only, not also the C library's (the baseline, half the time)");
-  app.add_flag("--json", json,
-               "print the figures as JSON (per regime; the baseline's under \"libm_activations\")");
+  app.add_flag("--json", json, "print the figures as JSON (per regime; the baseline's under \"libm_activations\")");
   app.set_version_flag("--version", robozoo::version_line());
   CLI11_PARSE(app, argc, argv);
   if (log_only && log_path.empty()) {
@@ -245,8 +250,7 @@ int main(int argc, char** argv) {
       if (!std::filesystem::is_regular_file(log_path)) throw std::runtime_error("no log file " + log_path);
       checkpoint = read_checkpoint(checkpoint_path_for(log_path));
       log_config = config_from_json(checkpoint.config);
-      if (checkpoint.population.genomes.empty())
-        throw std::runtime_error(log_path + ".checkpoint holds no genomes");
+      if (checkpoint.population.genomes.empty()) throw std::runtime_error(log_path + ".checkpoint holds no genomes");
     }
   } catch (const std::exception& e) {
     std::cerr << "robozoo-bench: " << e.what() << "\n";

@@ -84,9 +84,7 @@ std::string last_lines(const std::string& path, size_t n) {
   return out;
 }
 
-std::string results_path(const std::string& dir, const Trial& t) {
-  return dir + "/" + t.name() + kRunResultsExtension;
-}
+std::string results_path(const std::string& dir, const Trial& t) { return dir + "/" + t.name() + kRunResultsExtension; }
 
 /// Writes the compact result of the finished trial `t` when `path` lacks it or
 /// holds an older end; says so. Returns false (with the reason) on failure.
@@ -98,8 +96,8 @@ bool write_trial_results(const Trial& t, const std::string& path, int generation
     }
     const RunResults r = results_from_log(t.log_path);
     if (!r.run.complete()) {
-      std::cerr << "robozoo-experiment: " << t.log_path << " lacks generations (" << r.run.generations.size()
-                << " of " << r.run.generations_requested << "): no compact result written\n";
+      std::cerr << "robozoo-experiment: " << t.log_path << " lacks generations (" << r.run.generations.size() << " of "
+                << r.run.generations_requested << "): no compact result written\n";
       return false;
     }
     std::filesystem::create_directories(std::filesystem::path(path).parent_path());
@@ -130,12 +128,12 @@ void print_status(const Experiment& e) {
 /// What the command line asks for, besides the experiment's parameters.
 struct Options {
   ExperimentParams params;
-  std::string evolve;               ///< the robozoo-evolve program; empty: the one beside this program
-  std::string results_dir;          ///< the trials' compact results; empty: OUT/results
-  std::string mpirun = "mpirun";    ///< the MPI launcher with its options, split at spaces
+  std::string evolve;             ///< the robozoo-evolve program; empty: the one beside this program
+  std::string results_dir;        ///< the trials' compact results; empty: OUT/results
+  std::string mpirun = "mpirun";  ///< the MPI launcher with its options, split at spaces
   bool status_only = false;
   bool force = false;
-  double progress_interval = 5.0;   ///< seconds between progress lines
+  double progress_interval = 5.0;  ///< seconds between progress lines
 };
 
 /// Reads the command line into `o`; the exit status when the program ends here
@@ -172,7 +170,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
       ->delimiter(',')
       ->check(CLI::IsMember({"feedforward", "recurrent", "recurrent-sparse", "recurrent-zero"}))
       ->capture_default_str();
-  app.add_option("--generations", p.generations, "generations per trial (paper: 500)")->check(CLI::Range(1, 1000000000));
+  app.add_option("--generations", p.generations, "generations per trial (paper: 500)")
+      ->check(CLI::Range(1, 1000000000));
   app.add_option("--population", p.population, "genomes per generation (paper: 150)")->check(CLI::Range(2, 1000000));
   app.add_option("--workers", p.workers, "robozoo-evolve worker processes per trial (default: one per core)")
       ->check(CLI::Range(1, 4096));
@@ -187,7 +186,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
                  "or \"srun --mpi=pmix\"); only with --mpi")
       ->capture_default_str();
   app.add_option("--evolve", evolve, "the robozoo-evolve program (default: the one next to this program)");
-  app.add_option("--progress-interval", progress_interval, "seconds between progress lines (at most one per generation)")
+  app.add_option("--progress-interval", progress_interval,
+                 "seconds between progress lines (at most one per generation)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--status", status_only, "print where each trial stands and exit");
   app.add_flag("--force", force,
@@ -289,8 +289,7 @@ void print_plan(const Experiment& e) {
             << (p.steps > 0 ? ", " + std::to_string(p.steps) + " steps" : std::string()) << ", "
             << (p.mpi_ranks > 0 ? "MPI jobs of " + std::to_string(p.mpi_ranks) + " ranks"
                                 : (p.workers > 0 ? std::to_string(p.workers) : std::string("all")) + " workers")
-            << ", in " << p.out_dir
-            << "\n  " << finished << " finished (skipped), " << partial << " to resume, "
+            << ", in " << p.out_dir << "\n  " << finished << " finished (skipped), " << partial << " to resume, "
             << e.trials.size() - static_cast<size_t>(finished + partial) << " to start" << std::endl;
 }
 
@@ -316,8 +315,8 @@ std::optional<int> run_trial(Experiment& e, size_t i, const Options& o, const Si
   const Trial& t = e.trials[i];
   const bool resume = e.status[i].state == TrialState::Partial;
   std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": "
-            << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done) +
-                             " (to " + std::to_string(p.generations) + ")"
+            << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done) + " (to " +
+                             std::to_string(p.generations) + ")"
                        : std::string("starting"))
             << " (log " << t.log_path << ")" << std::endl;
   std::vector<std::string> args = trial_command(t, e.params, o.evolve, resume);
@@ -341,16 +340,14 @@ std::optional<int> run_trial(Experiment& e, size_t i, const Options& o, const Si
   for (;;) {
     const ChildEvent ev = wait_child(block, pid, 1.0);
     if (ev.kind == ChildEvent::Signalled) {
-      std::cerr << "\nrobozoo-experiment: " << strsignal(ev.signal) << ": stopping " << t.name() << " ..."
-                << std::endl;
+      std::cerr << "\nrobozoo-experiment: " << strsignal(ev.signal) << ": stopping " << t.name() << " ..." << std::endl;
       stop_child(pid);
       try {
         e.status[i] = trial_status(t, p);
       } catch (const std::exception&) {
       }
-      std::cerr << "robozoo-experiment: stopped; " << t.name() << " kept "
-                << e.status[i].generations_done << " finished generations. Run the same command again to resume."
-                << std::endl;
+      std::cerr << "robozoo-experiment: stopped; " << t.name() << " kept " << e.status[i].generations_done
+                << " finished generations. Run the same command again to resume." << std::endl;
       return 128 + ev.signal;
     }
     if (ev.kind == ChildEvent::Exited) {

@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
   }
   nlohmann::json out = nlohmann::json::array();
   if (!json)
-    std::printf("%-17s %7s %6s %12s %11s %16s %10s %8s\n", "arm", "genomes", "links", "beyond root",
-                "with joint", "joint+distance", "simulated", "spheres");
+    std::printf("%-17s %7s %6s %12s %11s %16s %10s %8s\n", "arm", "genomes", "links", "beyond root", "with joint",
+                "joint+distance", "simulated", "spheres");
   for (Arm arm : {Arm::FeedForward, Arm::Recurrent, Arm::RecurrentSparse, Arm::RecurrentZero}) {
     RunConfig c = base;
     c.regime = arm_regime(arm);
@@ -52,15 +52,18 @@ int main(int argc, char** argv) {
     const InitialRobotShares s = initial_robot_shares(c, genomes, seed);
     const double n = static_cast<double>(s.genomes);
     if (json) {
-      out.push_back({{"arm", arm_name(arm)}, {"genomes", s.genomes}, {"mean_links", s.mean_links},
-                     {"beyond_root", s.beyond_root}, {"with_joint", s.with_joint},
-                     {"joint_and_distance", s.joint_and_distance}, {"simulated", s.simulated},
+      out.push_back({{"arm", arm_name(arm)},
+                     {"genomes", s.genomes},
+                     {"mean_links", s.mean_links},
+                     {"beyond_root", s.beyond_root},
+                     {"with_joint", s.with_joint},
+                     {"joint_and_distance", s.joint_and_distance},
+                     {"simulated", s.simulated},
                      {"mean_spheres", s.mean_spheres}});
     } else {
       std::printf("%-17s %7lld %6.0f %11.1f%% %10.1f%% %15.1f%% %9.1f%% %8.2f\n", arm_name(arm).c_str(),
-                  static_cast<long long>(s.genomes), s.mean_links, 100.0 * s.beyond_root / n,
-                  100.0 * s.with_joint / n, 100.0 * s.joint_and_distance / n, 100.0 * s.simulated / n,
-                  s.mean_spheres);
+                  static_cast<long long>(s.genomes), s.mean_links, 100.0 * s.beyond_root / n, 100.0 * s.with_joint / n,
+                  100.0 * s.joint_and_distance / n, 100.0 * s.simulated / n, s.mean_spheres);
     }
   }
   if (json) std::cout << out.dump(2) << "\n";

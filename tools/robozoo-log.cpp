@@ -61,8 +61,8 @@ std::string dot_to_svg(const std::string& dot_text, const std::string& scratch) 
   text << svg.rdbuf();
   std::remove(out.c_str());
   if (r.status != 0)
-    throw std::runtime_error("Graphviz's dot failed (status " + std::to_string(r.status) + "): " +
-                             (r.status == 127 ? "not installed? (Debian package graphviz)" : r.output));
+    throw std::runtime_error("Graphviz's dot failed (status " + std::to_string(r.status) +
+                             "): " + (r.status == 127 ? "not installed? (Debian package graphviz)" : r.output));
   return text.str();
 }
 
@@ -85,18 +85,20 @@ int main(int argc, char** argv) {
   cat->add_option("--channel", filter.channel, "only this channel (ROBOZOO_POSE, or just pose)");
   cat->add_option("--generation", generation, "only the messages of this generation")->check(CLI::NonNegativeNumber);
   std::string recorded;
-  CLI::App* bus = app.add_subcommand(
-      "bus", "compare a recording of the bus (lcm-logger's) with the log of what was sent: events missing "
-             "(loss on the way), or changed, added, repeated or reordered (a defect). Exit 0 complete, 1 a "
-             "defect, 3 events missing");
+  CLI::App* bus =
+      app.add_subcommand("bus",
+                         "compare a recording of the bus (lcm-logger's) with the log of what was sent: events missing "
+                         "(loss on the way), or changed, added, repeated or reordered (a defect). Exit 0 complete, 1 a "
+                         "defect, 3 events missing");
   bus->add_option("SENT", log, "the log robozoo-evolve (or robozoo-replay play) wrote")->required();
   bus->add_option("RECORDED", recorded, "the recording of the bus")->required();
   bus->add_flag("--json", json, "the result as one JSON object");
   std::string output, compression = "zstd", format = "dot";
   size_t chunk_kib = 1024;
-  CLI::App* exporter = app.add_subcommand(
-      "export", "the log as an MCAP file for Foxglove: every message as JSON on its channel, poses as "
-                "foxglove.SceneUpdate on /robot/scene, generation figures on /generation/stats");
+  CLI::App* exporter =
+      app.add_subcommand("export",
+                         "the log as an MCAP file for Foxglove: every message as JSON on its channel, poses as "
+                         "foxglove.SceneUpdate on /robot/scene, generation figures on /generation/stats");
   exporter->add_option("LOG", log, "a log written by robozoo-evolve (or lcm-logger)")->required();
   exporter->add_option("-o,--output", output, "the MCAP file to write (written as FILE.partial, renamed at the end)")
       ->required();
@@ -127,7 +129,9 @@ int main(int argc, char** argv) {
     const BusRecording r = compare_bus_recording(sent, got);
     const int code = !r.defect.empty() ? 1 : r.missing > 0 ? 3 : 0;
     if (json)
-      std::cout << nlohmann::json{{"sent", r.sent}, {"received", r.received}, {"missing", r.missing},
+      std::cout << nlohmann::json{{"sent", r.sent},
+                                  {"received", r.received},
+                                  {"missing", r.missing},
                                   {"defect", r.defect.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.defect)},
                                   {"exit_code", code}}
                        .dump()
@@ -149,8 +153,8 @@ int main(int argc, char** argv) {
       const ExportReport r = mcap_out.finish();
       int64_t total = 0;
       for (const auto& [topic, n] : r.messages) total += n;
-      std::cerr << "robozoo-log: " << output << ": " << total << " messages on " << r.messages.size()
-                << " topics in " << r.chunks << " chunks";
+      std::cerr << "robozoo-log: " << output << ": " << total << " messages on " << r.messages.size() << " topics in "
+                << r.chunks << " chunks";
       if (r.skipped > 0) std::cerr << "; " << r.skipped << " events of other channels or undecodable, left out";
       if (r.poses_unshown > 0) std::cerr << "; " << r.poses_unshown << " poses without their morphology, no scene";
       std::cerr << "\n";
@@ -177,9 +181,8 @@ int main(int argc, char** argv) {
       const cppn_genome_t g = find_logged_genome(scanned, genome);
       std::string text = cppn_to_dot(g);
       if (format == "svg")
-        text = dot_to_svg(text, (std::filesystem::temp_directory_path() /
-                                 ("robozoo-cppn-" + std::to_string(::getpid())))
-                                    .string());
+        text = dot_to_svg(
+            text, (std::filesystem::temp_directory_path() / ("robozoo-cppn-" + std::to_string(::getpid()))).string());
       if (output.empty()) {
         std::cout << text;
         std::cout.flush();
@@ -202,7 +205,8 @@ int main(int argc, char** argv) {
     return s.runs.empty() ? 1 : 0;
   }
   if (generation >= 0) filter.generation = generation;
-  for (const LogDamage& d : scanned.damage) std::cerr << "robozoo-log: warning: " << log << ": " << d.describe() << "\n";
+  for (const LogDamage& d : scanned.damage)
+    std::cerr << "robozoo-log: warning: " << log << ": " << d.describe() << "\n";
   cat_log(scanned, filter, std::cout);
   std::cout.flush();
   return std::cout ? 0 : 1;

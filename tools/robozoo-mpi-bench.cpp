@@ -84,10 +84,10 @@ struct JobRecord {
 struct GenerationRecord {
   std::vector<JobRecord> jobs;  // in genome order
   double evaluate_wall = 0.0;
-  double root_cpu = 0.0;        // rank 0's main-thread CPU time while the workers evaluated
-  uint64_t messages = 0;        // sent + received
-  uint64_t bytes = 0;           // sent + received
-  StepTimings timings;          // from the progress report
+  double root_cpu = 0.0;  // rank 0's main-thread CPU time while the workers evaluated
+  uint64_t messages = 0;  // sent + received
+  uint64_t bytes = 0;     // sent + received
+  StepTimings timings;    // from the progress report
 };
 
 /// Forwards to the pool evaluator and records what each job cost.
@@ -143,11 +143,16 @@ double quantile(std::vector<double> v, double q) {
 
 std::string human(double s) {
   char buf[64];
-  if (s < 1.0) std::snprintf(buf, sizeof buf, "%.0f ms", 1e3 * s);
-  else if (s < 120.0) std::snprintf(buf, sizeof buf, "%.1f s", s);
-  else if (s < 7200.0) std::snprintf(buf, sizeof buf, "%.1f min", s / 60.0);
-  else if (s < 3 * 86400.0) std::snprintf(buf, sizeof buf, "%.1f h", s / 3600.0);
-  else std::snprintf(buf, sizeof buf, "%.1f days", s / 86400.0);
+  if (s < 1.0)
+    std::snprintf(buf, sizeof buf, "%.0f ms", 1e3 * s);
+  else if (s < 120.0)
+    std::snprintf(buf, sizeof buf, "%.1f s", s);
+  else if (s < 7200.0)
+    std::snprintf(buf, sizeof buf, "%.1f min", s / 60.0);
+  else if (s < 3 * 86400.0)
+    std::snprintf(buf, sizeof buf, "%.1f h", s / 3600.0);
+  else
+    std::snprintf(buf, sizeof buf, "%.1f days", s / 86400.0);
   return buf;
 }
 
@@ -191,7 +196,8 @@ std::string main_bound(const Projection& p) {
 /// next generations leaves the original untouched.
 void copy_run(const std::string& log, const std::string& dest) {
   namespace fs = std::filesystem;
-  const std::pair<std::string, std::string> files[] = {{log, dest}, {checkpoint_path_for(log), checkpoint_path_for(dest)}};
+  const std::pair<std::string, std::string> files[] = {{log, dest},
+                                                       {checkpoint_path_for(log), checkpoint_path_for(dest)}};
   for (const auto& [from, to] : files) {
     if (!fs::is_regular_file(from)) throw std::runtime_error("--resume: no file " + from);
     if (fs::exists(to))
@@ -221,7 +227,7 @@ struct MeasuredRun {
   std::vector<GenerationRecord> records;  // with the progress reports' timings
   int resumed_at = -1;                    // the generation a --resume run continued at; -1: a new run
   MpiTransportStats transport_stats;
-  std::vector<MpiWorkerStats> workers;    // by rank
+  std::vector<MpiWorkerStats> workers;  // by rank
 };
 
 /// Runs the evolution as robozoo-evolve --mpi does (or continues --resume's copy) on the worker
@@ -265,13 +271,12 @@ MeasuredRun measure_run(const MpiSession& session, const CLI::App& app, const Op
     }
     transport.start(config_to_json(evo.config()).dump());
     std::cerr << "robozoo-mpi-bench: " << session.size() << " ranks (" << transport.size() << " evaluating) on "
-              << session.host() << ": " << regime_name(config.regime) << ", population "
-              << config.neat.population << ", " << config.generations << " generations of " << config.eval.sim.steps
-              << " steps"
-              << (o.resume_log.empty() ? std::string()
-                                       : ", continuing " + o.resume_log + " at generation " +
-                                             std::to_string(evo.start_generation()) + " for " +
-                                             std::to_string(o.generations) + " generations")
+              << session.host() << ": " << regime_name(config.regime) << ", population " << config.neat.population
+              << ", " << config.generations << " generations of " << config.eval.sim.steps << " steps"
+              << (o.resume_log.empty()
+                      ? std::string()
+                      : ", continuing " + o.resume_log + " at generation " + std::to_string(evo.start_generation()) +
+                            " for " + std::to_string(o.generations) + " generations")
               << "\n";
     const auto report = [&](const ProgressReport& r) {
       reports.push_back(r);
@@ -293,7 +298,6 @@ MeasuredRun measure_run(const MpiSession& session, const CLI::App& app, const Op
   for (size_t g = 0; g < m.records.size() && g < reports.size(); ++g) m.records[g].timings = reports[g].timings;
   return m;
 }
-
 
 /// Every job's time and message sizes as rank 0 saw them.
 struct JobFigures {
@@ -389,16 +393,18 @@ RootFigures report_root(const MeasuredRun& m, const JobFigures& jf, nlohmann::js
     bytes.push_back(static_cast<double>(g.bytes));
   }
   std::printf("\nRank 0 per generation (mean of %zu)\n", records.size());
-  std::printf("  waiting for results %.3f s; serial part %.1f ms: messages and publishing %.1f ms, champion "
-              "trajectory %.1f ms, breeding (selection, speciation, reproduction) %.1f ms, checkpoint %.1f ms\n",
-              mean(wait), 1e3 * mean(serial), 1e3 * mean(messages), 1e3 * mean(trajectory), 1e3 * mean(breeding),
-              1e3 * mean(checkpoint));
+  std::printf(
+      "  waiting for results %.3f s; serial part %.1f ms: messages and publishing %.1f ms, champion "
+      "trajectory %.1f ms, breeding (selection, speciation, reproduction) %.1f ms, checkpoint %.1f ms\n",
+      mean(wait), 1e3 * mean(serial), 1e3 * mean(messages), 1e3 * mean(trajectory), 1e3 * mean(breeding),
+      1e3 * mean(checkpoint));
   const double serial_share = mean(total) > 0 ? mean(serial) / mean(total) : 0.0;
   std::printf("  the serial part is %.2f%% of the generation (%.3f s)\n", 100.0 * serial_share, mean(total));
   if (final_checkpoint > 0)
-    std::printf("  (not counted: the run's last generation waited %.1f ms for its last checkpoint to be on disk, once a "
-                "run)\n",
-                1e3 * final_checkpoint);
+    std::printf(
+        "  (not counted: the run's last generation waited %.1f ms for its last checkpoint to be on disk, once a "
+        "run)\n",
+        1e3 * final_checkpoint);
   std::printf("  rank 0 CPU while the workers evaluate: %.3f ms per job\n", 1e3 * mean(cpu_per_job));
   j["rank0_per_generation"] = {{"waiting_seconds", mean(wait)},
                                {"serial_seconds", mean(serial)},
@@ -410,13 +416,13 @@ RootFigures report_root(const MeasuredRun& m, const JobFigures& jf, nlohmann::js
                                {"checkpoint_seconds", mean(checkpoint)},
                                {"final_checkpoint_seconds_once", final_checkpoint},
                                {"cpu_per_job_seconds", mean(cpu_per_job)}};
-  std::printf("\nExchanged per generation: %.0f messages, %.0f kB (jobs %.0f B, results %.0f B on average); "
-              "setup broadcast once: %llu B\n",
-              mean(msgs), mean(bytes) / 1e3, mean(msg_out), mean(msg_in),
-              static_cast<unsigned long long>(transport_stats.setup_bytes));
-  j["per_generation_traffic"] = {{"messages", mean(msgs)},
-                                 {"bytes", mean(bytes)},
-                                 {"setup_bytes", transport_stats.setup_bytes}};
+  std::printf(
+      "\nExchanged per generation: %.0f messages, %.0f kB (jobs %.0f B, results %.0f B on average); "
+      "setup broadcast once: %llu B\n",
+      mean(msgs), mean(bytes) / 1e3, mean(msg_out), mean(msg_in),
+      static_cast<unsigned long long>(transport_stats.setup_bytes));
+  j["per_generation_traffic"] = {
+      {"messages", mean(msgs)}, {"bytes", mean(bytes)}, {"setup_bytes", transport_stats.setup_bytes}};
   return RootFigures{mean(serial), mean(cpu_per_job)};
 }
 
@@ -467,9 +473,10 @@ void report_projection(const MpiSession& session, const Options& o, const Measur
       late.push_back(std::move(c));
     }
   }
-  std::printf("\nProjection (evolve/parallel/scaling_model.hpp): latency %.0f us, rank 0's link %.1f Gbit/s, "
-              "cores %.2fx this machine's; paper: %d runs of %d generations\n",
-              o.latency_us, o.bandwidth_gbit, o.core_speed, o.paper_runs, o.paper_generations);
+  std::printf(
+      "\nProjection (evolve/parallel/scaling_model.hpp): latency %.0f us, rank 0's link %.1f Gbit/s, "
+      "cores %.2fx this machine's; paper: %d runs of %d generations\n",
+      o.latency_us, o.bandwidth_gbit, o.core_speed, o.paper_runs, o.paper_generations);
   nlohmann::json proj = nlohmann::json::object();
   for (const auto& [name, gens] : {std::pair<std::string, const std::vector<GenerationCost>*>{"as measured", &measured},
                                    {"all simulated", &late}}) {
@@ -482,9 +489,10 @@ void report_projection(const MpiSession& session, const Options& o, const Measur
                                       : "every robot simulated, late in a run");
     const Projection per_trial = project(*gens, o.trial_ranks, cluster);
     const double trial_run = per_trial.seconds * o.paper_generations;
-    std::printf("    ranks  s/generation  workers  rank0 link  serial  bound              speedup  efficiency  one run    "
-                "experiment: trials one after another | %d-rank trials side by side\n",
-                o.trial_ranks);
+    std::printf(
+        "    ranks  s/generation  workers  rank0 link  serial  bound              speedup  efficiency  one run    "
+        "experiment: trials one after another | %d-rank trials side by side\n",
+        o.trial_ranks);
     std::vector<int> counts = {session.size()};
     for (int r : o.ranks) counts.push_back(r);
     nlohmann::json rows = nlohmann::json::array();
@@ -496,8 +504,8 @@ void report_projection(const MpiSession& session, const Options& o, const Measur
       const double efficiency = speedup / (r - 1);
       // The same ranks as a job array: floor(r / trial_ranks) trials at a time.
       const int at_once = std::max(1, r / o.trial_ranks);
-      const double array_time = r < o.trial_ranks ? run * o.paper_runs
-                                                  : std::ceil(static_cast<double>(o.paper_runs) / at_once) * trial_run;
+      const double array_time =
+          r < o.trial_ranks ? run * o.paper_runs : std::ceil(static_cast<double>(o.paper_runs) / at_once) * trial_run;
       std::printf("    %5d  %12.3f  %7.3f  %10.4f  %6.3f  %-17s  %7.1f  %9.0f%%  %-9s  %-37s | %s\n", r, p.seconds,
                   p.workers, p.root_link, p.serial, main_bound(p).c_str(), speedup, 100.0 * efficiency,
                   human(run).c_str(), human(run * o.paper_runs).c_str(), human(array_time).c_str());
@@ -543,10 +551,11 @@ int run_root(const MpiSession& session, const CLI::App& app, const Options& o) {
                 {"seed", config.seed},
                 {"background_checkpoint", m.opts.background_checkpoint},
                 {"overlap_trajectory", m.opts.overlap_trajectory}};
-  std::printf("robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %zu generations "
-              "of up to %d steps, seed %lld",
-              session.size(), session.host().c_str(), session.size() - 1, regime_name(config.regime).c_str(),
-              config.neat.population, records.size(), config.eval.sim.steps, static_cast<long long>(config.seed));
+  std::printf(
+      "robozoo-mpi-bench: %d ranks on %s (1 evolving, %d evaluating); %s, population %d, %zu generations "
+      "of up to %d steps, seed %lld",
+      session.size(), session.host().c_str(), session.size() - 1, regime_name(config.regime).c_str(),
+      config.neat.population, records.size(), config.eval.sim.steps, static_cast<long long>(config.seed));
   if (resumed_at >= 0)
     std::printf("; generations %d-%d of %s", resumed_at, resumed_at + static_cast<int>(records.size()) - 1,
                 o.resume_log.c_str());
@@ -573,9 +582,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   const bool root = session->rank() == 0;
-  CLI::App app{"robozoo-mpi-bench: run an evolution over MPI as robozoo-evolve --mpi does, measure per-rank\n"
-               "throughput, rank 0's cost per generation and the traffic, and project the time per generation\n"
-               "and for the paper's experiment on more ranks. Start it with mpirun -np N (N >= 2)."};
+  CLI::App app{
+      "robozoo-mpi-bench: run an evolution over MPI as robozoo-evolve --mpi does, measure per-rank\n"
+      "throughput, rank 0's cost per generation and the traffic, and project the time per generation\n"
+      "and for the paper's experiment on more ranks. Start it with mpirun -np N (N >= 2)."};
   Options o;
   std::string ranks_text = "8,32,128";
   app.add_option("--regime", o.regime, "feedforward or recurrent")->check(CLI::IsMember({"feedforward", "recurrent"}));
@@ -586,9 +596,12 @@ int main(int argc, char** argv) {
   app.add_option("--steps", o.steps, "physics steps per evaluation (default 2500, the paper's)")
       ->check(CLI::Range(1, 1000000000));
   app.add_option("--config", o.config_file, "configuration file (.json or .toml); flags given override it");
-  app.add_option("--log", o.log_path, "keep the run's log here (default: a temporary folder, removed); with --resume, where the copy goes (must not exist)");
-  app.add_option("--lcm-url", o.lcm_url,
-                 "publish live on this LCM URL while measuring (given alone: LCM's default URL; default: no publishing)")
+  app.add_option("--log", o.log_path,
+                 "keep the run's log here (default: a temporary folder, removed); with --resume, where the copy goes "
+                 "(must not exist)");
+  app.add_option(
+         "--lcm-url", o.lcm_url,
+         "publish live on this LCM URL while measuring (given alone: LCM's default URL; default: no publishing)")
       ->expected(0, 1)
       ->default_str(robozoo::kDefaultLcmUrl);
   app.add_option("--project", ranks_text, "rank counts to project to, comma-separated (default 8,32,128)");
@@ -609,10 +622,10 @@ int main(int argc, char** argv) {
                "re-simulate a new champion for its poses within the generation, as a local run does, instead "
                "of while the next generation is evaluated (to compare)");
   app.add_option("--json", o.json_path, "also write every figure to this JSON file");
-  auto* resume =
-      app.add_option("--resume", o.resume_log,
-                     "measure the next --generations generations of this logged, unfinished run (a copy of LOG and "
-                     "LOG.checkpoint; the run's own configuration): late-generation costs, robots as evolution made them");
+  auto* resume = app.add_option(
+      "--resume", o.resume_log,
+      "measure the next --generations generations of this logged, unfinished run (a copy of LOG and "
+      "LOG.checkpoint; the run's own configuration): late-generation costs, robots as evolution made them");
   app.add_flag("--force", o.force_version, "with --resume: continue a checkpoint another robozoo version wrote")
       ->needs(resume);
   for (const char* name : {"--regime", "--seed", "--population", "--steps", "--config"})

@@ -73,8 +73,8 @@ int main(int argc, char** argv) {
 
   Rng rng(seed);
   if (bench) {
-    std::printf("%8s %8s %12s %12s %12s %10s\n", "spheres", "bodies", "steps/s", "bare_steps/s",
-                "physics%", "s/episode");
+    std::printf("%8s %8s %12s %12s %12s %10s\n", "spheres", "bodies", "steps/s", "bare_steps/s", "physics%",
+                "s/episode");
     for (int n : bench_sizes) {
       RandomRobotParams p = rp;
       p.min_spheres = p.max_spheres = n;
@@ -146,9 +146,9 @@ int main(int argc, char** argv) {
     }
     if (out)
       out << i << ',' << r.spheres.size() << ',' << r.num_bodies << ',' << r.joints.size() << ','
-          << outcome_name(res.outcome) << ',' << res.steps_run << ',' << res.stopped_early << ','
-          << res.d_raw << ',' << res.max_linear_acceleration << ',' << res.max_angular_acceleration << ','
-          << spin << ',' << contact << ',' << max_z << '\n';
+          << outcome_name(res.outcome) << ',' << res.steps_run << ',' << res.stopped_early << ',' << res.d_raw << ','
+          << res.max_linear_acceleration << ',' << res.max_angular_acceleration << ',' << spin << ',' << contact << ','
+          << max_z << '\n';
   }
   std::printf("robots %d (spheres %d-%d), %.0f steps/s overall\n", robots, rp.min_spheres, rp.max_spheres,
               steps_total / t_total);
@@ -163,9 +163,10 @@ int main(int argc, char** argv) {
               quantile(lin_acc, 0.95), quantile(lin_acc, 1.0));
   std::printf("not faulted: max angular acc median %.1f, 95%% %.1f, max %.1f rad/s^2\n", median(ang_acc),
               quantile(ang_acc, 0.95), quantile(ang_acc, 1.0));
-  std::printf("movers (|d_raw| > 0.05 m, %zu): worst-body mean angular speed median %.3f, 90%% %.3f, "
-              "95%% %.3f, max %.3f rad/s\n",
-              spin_stable_movers.size(), median(spin_stable_movers), quantile(spin_stable_movers, 0.9),
-              quantile(spin_stable_movers, 0.95), quantile(spin_stable_movers, 1.0));
+  std::printf(
+      "movers (|d_raw| > 0.05 m, %zu): worst-body mean angular speed median %.3f, 90%% %.3f, "
+      "95%% %.3f, max %.3f rad/s\n",
+      spin_stable_movers.size(), median(spin_stable_movers), quantile(spin_stable_movers, 0.9),
+      quantile(spin_stable_movers, 0.95), quantile(spin_stable_movers, 1.0));
   return 0;
 }

@@ -54,9 +54,10 @@ int main(int argc, char** argv) {
   for (int a = 0; a < kNumArms; ++a) arms.push_back(arm_name(static_cast<Arm>(a)));
   std::string arm_list;
   for (const auto& a : arms) arm_list += (arm_list.empty() ? "" : ", ") + a;
-  app.add_option("--compare", compare,
-                 "the two arms to compare, control first: " + arm_list +
-                     " (robozoo-experiment --arms); runs of other arms are listed, their fitness compared with the control's")
+  app.add_option(
+         "--compare", compare,
+         "the two arms to compare, control first: " + arm_list +
+             " (robozoo-experiment --arms); runs of other arms are listed, their fitness compared with the control's")
       ->delimiter(',')
       ->expected(2)
       ->check(CLI::IsMember(arms))
@@ -89,8 +90,8 @@ int main(int argc, char** argv) {
   return exit_status_of("robozoo-stats", [&] {
     std::cerr << "robozoo-stats: reading " << o.log_dir << "\n";
     const StatsOutcome r = run_stats(o, std::cerr);
-    std::cerr << "robozoo-stats: " << r.analysis.control.size() << " " << arm_title(r.analysis.control_arm)
-              << " and " << r.analysis.experimental.size() << " " << arm_title(r.analysis.experimental_arm) << " runs";
+    std::cerr << "robozoo-stats: " << r.analysis.control.size() << " " << arm_title(r.analysis.control_arm) << " and "
+              << r.analysis.experimental.size() << " " << arm_title(r.analysis.experimental_arm) << " runs";
     if (!r.skipped.empty()) std::cerr << ", " << r.skipped.size() << " left out (listed in the report)";
     std::cerr << "\n  wrote";
     for (const auto& f : r.files) std::cerr << " " << f;

@@ -41,17 +41,17 @@ using robozoo::Regime;
 struct RunResult {
   int64_t seed = 0;
   bool solved = false;
-  int generation = -1;       // generation of the first solution
-  int64_t evaluations = 0;   // the preset's count (see above)
+  int generation = -1;                 // generation of the first solution
+  int64_t evaluations = 0;             // the preset's count (see above)
   int64_t generation_evaluations = 0;  // genomes evaluated up to and including that generation
   int64_t solver_evaluations = 0;      // genomes evaluated up to and including the first solver
-  int hidden = 0;            // hidden nodes of the solution
-  int enabled_links = 0;     // enabled links of the solution
-  int species = 0;           // species in the solving generation
+  int hidden = 0;                      // hidden nodes of the solution
+  int enabled_links = 0;               // enabled links of the solution
+  int species = 0;                     // species in the solving generation
 };
 
-RunResult run_once(const robozoo::NeatParams& params, const robozoo::XorPreset& preset, Regime regime,
-                   int64_t seed, int cap) {
+RunResult run_once(const robozoo::NeatParams& params, const robozoo::XorPreset& preset, Regime regime, int64_t seed,
+                   int cap) {
   const robozoo::GenomeLayout& layout = preset.layout;
   robozoo::Rng rng(static_cast<uint64_t>(seed));
   robozoo::Population pop(params, regime, layout, rng);
@@ -175,9 +175,7 @@ int main(int argc, char** argv) {
   app.add_option("--generations", generations, "generation cap; a run without a solution by then fails")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app.add_option("--population", population, "population size")
-      ->check(CLI::Range(2, 1000000))
-      ->capture_default_str();
+  app.add_option("--population", population, "population size")->check(CLI::Range(2, 1000000))->capture_default_str();
   app.add_option("--preset", preset_name, "parameter set: default or neat-paper")
       ->check(CLI::IsMember(robozoo::xor_preset_names()))
       ->capture_default_str();
@@ -229,15 +227,13 @@ int main(int argc, char** argv) {
       const RunResult res = run_once(params, preset, regime, seed + r, generations);
       std::cerr << name << " run " << r + 1 << "/" << runs << " seed " << res.seed << ": "
                 << (res.solved ? "solved in generation " + std::to_string(res.generation) + ", " +
-                                     std::to_string(res.evaluations) + " evaluations, " +
-                                     std::to_string(res.hidden) + " hidden, " +
-                                     std::to_string(res.enabled_links) + " links"
+                                     std::to_string(res.evaluations) + " evaluations, " + std::to_string(res.hidden) +
+                                     " hidden, " + std::to_string(res.enabled_links) + " links"
                                : "not solved in " + std::to_string(generations) + " generations")
                 << "\n";
       results.push_back(res);
     }
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     summaries.push_back(summarise(name, results, wall));
   }
 
@@ -260,42 +256,53 @@ int main(int argc, char** argv) {
     for (const auto& s : summaries) {
       nlohmann::json per = nlohmann::json::array();
       for (const auto& r : s.per_run)
-        per.push_back({{"seed", r.seed}, {"solved", r.solved}, {"generation", r.generation},
-                       {"evaluations", r.evaluations}, {"generation_evaluations", r.generation_evaluations},
-                       {"solver_evaluations", r.solver_evaluations}, {"hidden", r.hidden},
-                       {"enabled_links", r.enabled_links}, {"species", r.species}});
-      j["regimes"].push_back({{"regime", s.regime}, {"runs", s.runs}, {"solved", s.solved},
-                              {"evaluations_mean", s.evals_mean}, {"evaluations_std", s.evals_std},
-                              {"evaluations_min", s.evals_min}, {"evaluations_max", s.evals_max},
+        per.push_back({{"seed", r.seed},
+                       {"solved", r.solved},
+                       {"generation", r.generation},
+                       {"evaluations", r.evaluations},
+                       {"generation_evaluations", r.generation_evaluations},
+                       {"solver_evaluations", r.solver_evaluations},
+                       {"hidden", r.hidden},
+                       {"enabled_links", r.enabled_links},
+                       {"species", r.species}});
+      j["regimes"].push_back({{"regime", s.regime},
+                              {"runs", s.runs},
+                              {"solved", s.solved},
+                              {"evaluations_mean", s.evals_mean},
+                              {"evaluations_std", s.evals_std},
+                              {"evaluations_min", s.evals_min},
+                              {"evaluations_max", s.evals_max},
                               {"generation_evaluations_mean", s.gen_evals_mean},
                               {"generation_evaluations_std", s.gen_evals_std},
                               {"solver_evaluations_mean", s.solver_evals_mean},
                               {"solver_evaluations_std", s.solver_evals_std},
-                              {"generations_mean", s.gens_mean}, {"hidden_mean", s.hidden_mean},
-                              {"enabled_links_mean", s.links_mean}, {"wall_seconds", s.wall_s},
+                              {"generations_mean", s.gens_mean},
+                              {"hidden_mean", s.hidden_mean},
+                              {"enabled_links_mean", s.links_mean},
+                              {"wall_seconds", s.wall_s},
                               {"per_run", per}});
     }
     std::cout << j.dump(2) << "\n";
     return 0;
   }
-  std::cout << "XOR, preset " << preset_name << ", population " << population << ", generation cap "
-            << generations << ", seeds " << seed << ".." << seed + runs - 1 << ", hidden activations mask "
-            << params.hidden_activations << "\n"
-            << (preset.count_to_solver
-                    ? "evaluations = genomes evaluated up to and including the first solver (the NEAT paper's count)\n\n"
-                    : "evaluations = genomes evaluated up to and including the solving generation\n\n");
-  std::cout << std::left << std::setw(12) << "regime" << std::right << std::setw(9) << "solved"
-            << std::setw(11) << "evals" << std::setw(9) << "std" << std::setw(8) << "min"
-            << std::setw(8) << "max" << std::setw(8) << "gens" << std::setw(8) << "hidden"
-            << std::setw(8) << "links" << std::setw(9) << "wall_s" << "\n";
+  std::cout
+      << "XOR, preset " << preset_name << ", population " << population << ", generation cap " << generations
+      << ", seeds " << seed << ".." << seed + runs - 1 << ", hidden activations mask " << params.hidden_activations
+      << "\n"
+      << (preset.count_to_solver
+              ? "evaluations = genomes evaluated up to and including the first solver (the NEAT paper's count)\n\n"
+              : "evaluations = genomes evaluated up to and including the solving generation\n\n");
+  std::cout << std::left << std::setw(12) << "regime" << std::right << std::setw(9) << "solved" << std::setw(11)
+            << "evals" << std::setw(9) << "std" << std::setw(8) << "min" << std::setw(8) << "max" << std::setw(8)
+            << "gens" << std::setw(8) << "hidden" << std::setw(8) << "links" << std::setw(9) << "wall_s"
+            << "\n";
   for (const auto& s : summaries) {
     std::cout << std::left << std::setw(12) << s.regime << std::right << std::setw(9)
-              << (std::to_string(s.solved) + "/" + std::to_string(s.runs)) << std::fixed
-              << std::setprecision(0) << std::setw(11) << s.evals_mean << std::setw(9) << s.evals_std
-              << std::setw(8) << s.evals_min << std::setw(8) << s.evals_max << std::setprecision(1)
-              << std::setw(8) << s.gens_mean << std::setprecision(2) << std::setw(8) << s.hidden_mean
-              << std::setw(8) << s.links_mean << std::setprecision(1) << std::setw(9) << s.wall_s
-              << "\n";
+              << (std::to_string(s.solved) + "/" + std::to_string(s.runs)) << std::fixed << std::setprecision(0)
+              << std::setw(11) << s.evals_mean << std::setw(9) << s.evals_std << std::setw(8) << s.evals_min
+              << std::setw(8) << s.evals_max << std::setprecision(1) << std::setw(8) << s.gens_mean
+              << std::setprecision(2) << std::setw(8) << s.hidden_mean << std::setw(8) << s.links_mean
+              << std::setprecision(1) << std::setw(9) << s.wall_s << "\n";
   }
   std::cout << "(NEAT paper, feed-forward: 100/100 solved, 4,755 evaluations mean, std 2,553, "
                "2.35 hidden nodes)\n";

@@ -1,19 +1,20 @@
 #!/usr/bin/env bash
-# The README's test command: install what is missing, build with warnings as
-# errors, run every test, then run every fuzz target for 10 s (tools/fuzz.sh).
+# The README's test command: install what is missing, check the sources'
+# formatting (tools/format.sh --check), build with warnings as errors, run every
+# test, then run every fuzz target for 10 s (tools/fuzz.sh).
 #
 #   tools/test.sh              # all of it (CI)
 #   tools/test.sh --no-fuzz    # build/ (-Werror) and ctest only
 #   tools/test.sh --sanitize   # the whole suite under AddressSanitizer and
 #                              # UndefinedBehaviorSanitizer, in build-sanitize/
-# Environment: ROBOZOO_FORMAT_CHECK=1 also fails on unformatted sources (tools/format.sh --check);
+# Environment: ROBOZOO_FORMAT_CHECK=0 skips the formatting check (while editing);
 # ROBOZOO_CROSS_BUILD=1 also proves the same bits from clang and gcc -O0 builds (tools/cross_build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-}"
 case "$mode" in
   ""|--no-fuzz|--sanitize) ;;
-  -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   *) echo "test.sh: unknown option $mode (use --no-fuzz or --sanitize)" >&2; exit 2 ;;
 esac
 tools/setup.sh
@@ -61,7 +62,7 @@ if [ "$mode" = "--sanitize" ]; then
   exit "$status"
 fi
 
-if [ "${ROBOZOO_FORMAT_CHECK:-0}" = 1 ]; then
+if [ "${ROBOZOO_FORMAT_CHECK:-1}" = 1 ]; then
   tools/format.sh --check
 fi
 tools/build.sh --werror

@@ -15,8 +15,9 @@ struct BusFeedOptions {
   std::string url;              ///< LCM URL
   double stream_timeout = 3.0;  ///< a pose stream is over after this long without a message (s)
   double idle_exit = 0.0;       ///< once a run was seen, return after this long without a message (s); 0 = never
-  int queue_messages = kSubscriberQueueMessages;  ///< messages LCM may hold while ingest() is busy, beyond them it drops
-                                ///< (count; about 10 s of evolve's paced 1 MB/s)
+  int queue_messages =
+      kSubscriberQueueMessages;  ///< messages LCM may hold while ingest() is busy, beyond them it drops
+                                 ///< (count; about 10 s of evolve's paced 1 MB/s)
 };
 
 /// Reads the bus until `should_stop()` (checked about every 100 ms) or the idle

@@ -15,8 +15,8 @@
 namespace robozoo::view {
 
 struct QueueLimits {
-  size_t max_poses = 240;    ///< pose frames waiting, at most (count; about 10 s of a 25 Hz stream)
-  size_t max_other = 4096;   ///< other frames waiting before the page is given up (count)
+  size_t max_poses = 240;   ///< pose frames waiting, at most (count; about 10 s of a 25 Hz stream)
+  size_t max_other = 4096;  ///< other frames waiting before the page is given up (count)
 };
 
 struct QueueCounters {

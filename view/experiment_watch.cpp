@@ -92,8 +92,9 @@ ExperimentWatch::ExperimentWatch(std::string dir, ExperimentWatchOptions options
   if (!fs::is_directory(dir_, ec)) throw std::runtime_error(dir_ + ": not a folder");
   poll();
   if (trials_.empty())
-    throw std::runtime_error(dir_ + ": no experiment here (no trial log <arm>-s<seed>.lcmlog, as robozoo-experiment "
-                                    "writes)");
+    throw std::runtime_error(dir_ +
+                             ": no experiment here (no trial log <arm>-s<seed>.lcmlog, as robozoo-experiment "
+                             "writes)");
 }
 
 bool ExperimentWatch::poll() {
@@ -178,9 +179,15 @@ nlohmann::json ExperimentWatch::summary_json_locked() const {
   nlohmann::json trials = nlohmann::json::array();
   for (const TrialProgress& t : all) {
     const double best = t.best_so_far.empty() ? kNaN : t.best_so_far.back();
-    trials.push_back({{"name", t.name}, {"arm", t.arm}, {"seed", t.seed}, {"state", t.state},
-                      {"generations", t.best_so_far.size()}, {"planned", t.planned}, {"best", best},
-                      {"checkpoint", t.checkpoint}, {"bsf", t.best_so_far}});
+    trials.push_back({{"name", t.name},
+                      {"arm", t.arm},
+                      {"seed", t.seed},
+                      {"state", t.state},
+                      {"generations", t.best_so_far.size()},
+                      {"planned", t.planned},
+                      {"best", best},
+                      {"checkpoint", t.checkpoint},
+                      {"bsf", t.best_so_far}});
   }
   nlohmann::json arms = nlohmann::json::array();
   const std::vector<ArmCurve> curves = arm_curves(all);
@@ -194,7 +201,7 @@ nlohmann::json ExperimentWatch::summary_json_locked() const {
         if (p[g] < options_.alpha) sig.push_back(g);
       tests.push_back({{"a", curves[i].arm}, {"b", curves[j].arm}, {"p", p}, {"significant", sig}});
     }
-  return {{"t", "experiment"}, {"dir", dir_},   {"alpha", options_.alpha}, {"test", "Student's t-test, two-sided"},
+  return {{"t", "experiment"}, {"dir", dir_},  {"alpha", options_.alpha}, {"test", "Student's t-test, two-sided"},
           {"trials", trials},  {"arms", arms}, {"tests", tests}};
 }
 

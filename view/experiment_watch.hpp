@@ -28,7 +28,7 @@ struct ExperimentWatchOptions {
 
 /// One trial as read so far.
 struct TrialProgress {
-  std::string name;                 ///< "<arm>-s<seed>", the log's name without .lcmlog
+  std::string name;  ///< "<arm>-s<seed>", the log's name without .lcmlog
   std::string arm;
   int64_t seed = 0;
   std::string log_path;

@@ -81,7 +81,8 @@ class ModuleSet {
     if (url.find("..") != std::string::npos) throw std::runtime_error("cannot inline " + url);
     const bool three = url.rfind("/three/", 0) == 0;
     const std::string file = three ? dirs_.three + url.substr(6) : dirs_.page + url;
-    std::string src = read_text(file, three ? "Debian package libjs-three, or --three-dir" : "the page's folder, or --page-dir");
+    std::string src =
+        read_text(file, three ? "Debian package libjs-three, or --three-dir" : "the page's folder, or --page-dir");
     modules_[url] = "";  // taken, against cycles
     // import ... from "x" / import "x" / import("x"): the specifier as a bare name.
     static const std::regex spec_re(R"re(((?:\bfrom|\bimport)\s*\(?\s*)(["'])([^"'\n]+)\2)re");
@@ -123,7 +124,8 @@ class ModuleSet {
 /// three.min.js defines the global THREE; the module "three" re-exports the
 /// names three.module.js exports (its closing export list), from that global.
 std::string three_shim(const AssetDirs& dirs) {
-  const std::string module = read_text(dirs.three + "/build/three.module.js", "Debian package libjs-three, or --three-dir");
+  const std::string module =
+      read_text(dirs.three + "/build/three.module.js", "Debian package libjs-three, or --three-dir");
   const size_t at = module.rfind("export {");
   const size_t end = module.find('}', at);
   if (at == std::string::npos || end == std::string::npos)
@@ -182,7 +184,8 @@ nlohmann::json champion_frames(const ExportOptions& o) {
   nlohmann::json champion = champion_json(genome->genome);
   champion.erase("t");
   const std::string name = o.log.substr(o.log.find_last_of('/') + 1);
-  return nlohmann::json::array({hello_json("file", name), run_json(run->run, target3),
+  return nlohmann::json::array({hello_json("file", name),
+                                run_json(run->run, target3),
                                 {{"t", "history"}, {"gens", gens}},
                                 {{"t", "champions"}, {"list", nlohmann::json::array({champion})}},
                                 robot_json(genome->genome, genome->morphology, false, false),
@@ -223,12 +226,11 @@ std::string offline_page(const AssetDirs& dirs, const nlohmann::json& frames) {
   // JSON text is safe in a script element once every '<' (only ever inside a string) is escaped.
   std::string data;
   for (char c : frames.dump()) data += c == '<' ? std::string("\\u003c") : std::string(1, c);
-  const std::string three = script_safe(read_text(dirs.three + "/three.min.js", "Debian package libjs-three, or --three-dir"),
-                                        "three.min.js");
+  const std::string three = script_safe(
+      read_text(dirs.three + "/three.min.js", "Debian package libjs-three, or --three-dir"), "three.min.js");
   const std::string head = "<script>\n" + three + "\n</script>\n<script type=\"importmap\">\n" +
                            modules.import_map(three_shim(dirs)).dump() +
-                           "\n</script>\n<script type=\"application/json\" id=\"robozoo-data\">" + data +
-                           "</script>\n";
+                           "\n</script>\n<script type=\"application/json\" id=\"robozoo-data\">" + data + "</script>\n";
   // At the old import map's place (in <head>, before the page's first module script).
   return html.replace(html.find(marker), marker.size(), head);
 }

@@ -103,17 +103,31 @@ nlohmann::json robot_json(const cppn_genome_t& g, const morphology_t& m, bool li
   for (int8_t t : m.sensor_type) types.push_back(t);
   nlohmann::json sensor_sphere = nlohmann::json::array();
   for (int32_t s : m.sensor_sphere) sensor_sphere.push_back(s);
-  return {{"t", "robot"},   {"id", g.genome_id},       {"gen", g.generation},      {"fitness", g.fitness},
-          {"radius", radius}, {"leaf", leaf},          {"start", start},           {"sensor_type", types},
-          {"sensor_sphere", sensor_sphere}, {"neurons", m.num_neurons}, {"sensors", m.num_sensors},
-          {"live", live}, {"replay", replay}, {"cppn", cppn_json(g)}};
+  return {{"t", "robot"},
+          {"id", g.genome_id},
+          {"gen", g.generation},
+          {"fitness", g.fitness},
+          {"radius", radius},
+          {"leaf", leaf},
+          {"start", start},
+          {"sensor_type", types},
+          {"sensor_sphere", sensor_sphere},
+          {"neurons", m.num_neurons},
+          {"sensors", m.num_sensors},
+          {"live", live},
+          {"replay", replay},
+          {"cppn", cppn_json(g)}};
 }
 
 nlohmann::json pose_json(const pose_t& p) {
-  return {{"t", "pose"},          {"id", p.genome_id},
-          {"step", p.step},       {"time", p.sim_time},
-          {"utime", p.utime},     {"c", flat_points(p.sphere_center)},
-          {"n", values(p.neuron_output)}, {"s", values(p.sensor_value)}};
+  return {{"t", "pose"},
+          {"id", p.genome_id},
+          {"step", p.step},
+          {"time", p.sim_time},
+          {"utime", p.utime},
+          {"c", flat_points(p.sphere_center)},
+          {"n", values(p.neuron_output)},
+          {"s", values(p.sensor_value)}};
 }
 
 nlohmann::json trajectory_json(int64_t genome_id, const Trajectory& t) {

@@ -18,12 +18,12 @@ namespace robozoo::view {
 
 struct LogFeedOptions {
   std::string path;
-  double speed = 1.0;        ///< times real time (> 0)
-  bool loop = false;         ///< play again from the start at the end
-  bool follow = false;       ///< at the end, play what is appended to the log
-  int32_t generation = 0;    ///< start playing at this generation
-  double poll_seconds = 0.5; ///< --follow: look for new events this often (s)
-  bool exit_at_end = false;  ///< return at the end of the log (tests, measurements)
+  double speed = 1.0;         ///< times real time (> 0)
+  bool loop = false;          ///< play again from the start at the end
+  bool follow = false;        ///< at the end, play what is appended to the log
+  int32_t generation = 0;     ///< start playing at this generation
+  double poll_seconds = 0.5;  ///< --follow: look for new events this often (s)
+  bool exit_at_end = false;   ///< return at the end of the log (tests, measurements)
 };
 
 /// Plays until `should_stop()` (checked about every 100 ms). Throws

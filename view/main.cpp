@@ -57,8 +57,8 @@ int run_export(CLI::App& sub, Args& a) {
   write_whole_file(a.export_out, html);
   const nlohmann::json& robot = frames[4];
   std::cerr << "robozoo-view: wrote " << a.export_out << ": genome " << robot["id"] << " (generation " << robot["gen"]
-            << ", " << robot["radius"].size() << " spheres, " << frames[5]["list"].size() << " samples), "
-            << std::fixed << std::setprecision(2) << html.size() / 1e6 << " MB\n";
+            << ", " << robot["radius"].size() << " spheres, " << frames[5]["list"].size() << " samples), " << std::fixed
+            << std::setprecision(2) << html.size() / 1e6 << " MB\n";
   return 0;
 }
 
@@ -84,7 +84,9 @@ Route export_route(const std::string& log, const AssetDirs& dirs) {
 }
 
 std::string address_text(const std::string& bind, unsigned short port) {
-  const std::string host = bind.find(':') != std::string::npos ? "[" + bind + "]" : bind == "0.0.0.0" ? "127.0.0.1" : bind;
+  const std::string host = bind.find(':') != std::string::npos ? "[" + bind + "]"
+                           : bind == "0.0.0.0"                 ? "127.0.0.1"
+                                                               : bind;
   return "http://" + host + ":" + std::to_string(port) + "/";
 }
 
@@ -218,12 +220,14 @@ int main(int argc, char** argv) {
   app.add_option("--speed", a.log.speed, "LOG: times real time")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_flag("--loop", a.log.loop, "LOG: play again from the start at the end");
   app.add_flag("--follow", a.log.follow, "LOG: at the end, keep playing what is appended to the log");
-  app.add_option("--generation", a.log.generation, "LOG: start playing at this generation (the earlier ones are "
-                                                   "on the chart at once)")
+  app.add_option("--generation", a.log.generation,
+                 "LOG: start playing at this generation (the earlier ones are "
+                 "on the chart at once)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--exit-at-end", a.log.exit_at_end, "LOG: exit at the end of the log instead of staying up");
-  app.add_option("--idle-exit", a.bus.idle_exit, "--lcm-url: exit after this many seconds without a message, once a "
-                                                 "run was seen (0: never)")
+  app.add_option("--idle-exit", a.bus.idle_exit,
+                 "--lcm-url: exit after this many seconds without a message, once a "
+                 "run was seen (0: never)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--stream-timeout", a.bus.stream_timeout,
                  "--lcm-url: a pose stream is over after this many seconds without a message")
@@ -235,19 +239,22 @@ int main(int argc, char** argv) {
   app.add_option("--keep-streams", a.state.keep_streams,
                  "--lcm-url: champions whose poses stay in memory for replays (older ones are re-simulated)")
       ->capture_default_str();
-  app.add_option("--page-dir", a.dirs.page, "folder of the page's files (default: ../share/robozoo/view beside the "
-                                            "program)");
+  app.add_option("--page-dir", a.dirs.page,
+                 "folder of the page's files (default: ../share/robozoo/view beside the "
+                 "program)");
   app.add_option("--three-dir", a.dirs.three, "three.js's folder (default: " ROBOZOO_THREE_DIR ")");
-  app.add_option("--experiment", a.experiment, "follow an experiment folder (robozoo-experiment --out): every "
-                                               "trial's fitness, the arms' means and their differences");
+  app.add_option("--experiment", a.experiment,
+                 "follow an experiment folder (robozoo-experiment --out): every "
+                 "trial's fitness, the arms' means and their differences");
   app.add_option("--poll", a.poll_seconds, "--experiment: look at the folder this often (s)")->capture_default_str();
   app.add_option("--running-seconds", a.watch.running_seconds,
                  "--experiment: a trial whose log changed this recently is running (s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app.add_flag("-q,--quiet", a.quiet, "only the address and the final summary");
-  CLI::App* exp = app.add_subcommand("export", "write one champion of a LOG as one self-contained HTML file that "
-                                               "plays it offline (no server, no network)");
+  CLI::App* exp = app.add_subcommand("export",
+                                     "write one champion of a LOG as one self-contained HTML file that "
+                                     "plays it offline (no server, no network)");
   exp->add_option("LOG", a.export_options.log, "a log written by robozoo-evolve")->required();
   exp->add_option("--genome", a.export_genome, "the genome to export (default: the log's last champion)");
   exp->add_option("-o,--output", a.export_out, "the HTML file to write")->required();

@@ -115,7 +115,8 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
 
   void run(http::request<http::string_body> req) {
     beast::error_code ec;
-    beast::get_lowest_layer(ws_).socket().set_option(net::socket_base::send_buffer_size(shared_.options.send_buffer), ec);
+    beast::get_lowest_layer(ws_).socket().set_option(net::socket_base::send_buffer_size(shared_.options.send_buffer),
+                                                     ec);
     beast::get_lowest_layer(ws_).expires_never();
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     // The size limit is in_'s: a message that does not fit ends the read with

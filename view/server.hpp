@@ -18,10 +18,10 @@ namespace robozoo::view {
 
 /// The answer to a request for a path the program serves itself (not a file).
 struct HttpReply {
-  int status = 200;          ///< HTTP status
+  int status = 200;  ///< HTTP status
   std::string content_type;
   std::string body;
-  std::string download;      ///< when set, a file to save under this name (Content-Disposition)
+  std::string download;  ///< when set, a file to save under this name (Content-Disposition)
 };
 
 /// Answers a GET target that is not a file of the table ("/export?genome=3");
@@ -29,14 +29,14 @@ struct HttpReply {
 using Route = std::function<std::optional<HttpReply>(const std::string& target)>;
 
 struct ServerOptions {
-  std::string bind = "127.0.0.1";    ///< address to listen on (loopback unless asked)
-  unsigned short port = 8080;        ///< 0: any free port
-  size_t max_client_frame = 4096;    ///< largest message a page may send (bytes)
-  int send_buffer = 64 * 1024;       ///< kernel send buffer per page (bytes): a slow page's backlog
-                                     ///< stays in its ClientQueue, where old poses can be dropped
-  double stats_interval = 1.0;       ///< a "stats" frame to each page this often (s)
-  size_t max_pending_replays = 4;    ///< re-simulations waiting at once, more are refused (count)
-  Route route;                       ///< paths the program answers itself (none when empty)
+  std::string bind = "127.0.0.1";  ///< address to listen on (loopback unless asked)
+  unsigned short port = 8080;      ///< 0: any free port
+  size_t max_client_frame = 4096;  ///< largest message a page may send (bytes)
+  int send_buffer = 64 * 1024;     ///< kernel send buffer per page (bytes): a slow page's backlog
+                                   ///< stays in its ClientQueue, where old poses can be dropped
+  double stats_interval = 1.0;     ///< a "stats" frame to each page this often (s)
+  size_t max_pending_replays = 4;  ///< re-simulations waiting at once, more are refused (count)
+  Route route;                     ///< paths the program answers itself (none when empty)
 };
 
 class Server {

@@ -148,10 +148,11 @@ void ViewState::push_snapshot_locked(Client& c) {
   push_locked(c, make_frame({{"t", "champions"}, {"list", champions_}}), false);
   if (robot_frame_.is_null()) return;
   push_locked(c, make_frame(robot_frame_), false);
-  push_locked(c,
-              make_frame({{"t", "poses"}, {"id", shown_id_}, {"list", shown_poses_}, {"done", shown_done_},
-                          {"resimulated", false}}),
-              false);
+  push_locked(
+      c,
+      make_frame(
+          {{"t", "poses"}, {"id", shown_id_}, {"list", shown_poses_}, {"done", shown_done_}, {"resimulated", false}}),
+      false);
 }
 
 std::shared_ptr<Client> ViewState::join(std::function<void()> wake) {

@@ -28,9 +28,9 @@
 namespace robozoo::view {
 
 struct ViewStateOptions {
-  QueueLimits queue;            ///< per page
-  size_t keep_streams = 8;      ///< pose streams whose poses stay in memory (count); 0 = all
-  int resimulate_every = 4;     ///< re-simulated replays keep every k-th step (count; evolve's default pose rate)
+  QueueLimits queue;         ///< per page
+  size_t keep_streams = 8;   ///< pose streams whose poses stay in memory (count); 0 = all
+  int resimulate_every = 4;  ///< re-simulated replays keep every k-th step (count; evolve's default pose rate)
 };
 
 /// One connected page.
@@ -56,11 +56,11 @@ struct ViewCounters {
 /// A replay a page asked for: the frames to send now, or a re-simulation to
 /// run first (off every lock: it takes a fraction of a second).
 struct ReplayPlan {
-  std::vector<Frame> frames;           ///< ready: the robot, then its poses
-  std::optional<run_t> run;            ///< to re-simulate: the run,
-  std::optional<cppn_genome_t> genome;      ///< the genome
+  std::vector<Frame> frames;               ///< ready: the robot, then its poses
+  std::optional<run_t> run;                ///< to re-simulate: the run,
+  std::optional<cppn_genome_t> genome;     ///< the genome
   std::optional<morphology_t> morphology;  ///< and its logged morphology (checked against the re-grown robot)
-  std::string error;                   ///< set when the genome is unknown
+  std::string error;                       ///< set when the genome is unknown
 };
 
 class ViewState {
@@ -111,13 +111,13 @@ class ViewState {
   mutable std::mutex mutex_;
   std::unique_ptr<MessageCollector> collector_;
   std::string run_id_;
-  nlohmann::json run_frame_;            ///< null until a run is seen
+  nlohmann::json run_frame_;  ///< null until a run is seen
   std::vector<nlohmann::json> history_;
   std::vector<nlohmann::json> champions_;
   uint64_t last_champion_genes_ = 0;
   bool have_champion_ = false;
   int64_t shown_id_ = -1;
-  nlohmann::json robot_frame_;          ///< null until a robot is shown
+  nlohmann::json robot_frame_;  ///< null until a robot is shown
   nlohmann::json shown_poses_ = nlohmann::json::array();
   bool shown_done_ = false;
   std::vector<GenomeRecord*> completed_;  ///< streams with poses kept, oldest first

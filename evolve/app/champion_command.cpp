@@ -12,8 +12,9 @@ void add_champion_options(CLI::App& app, ChampionOptions& o) {
   app.add_option("RESULT", o.results_file, "a compact result (<run>.results.json, robozoo-experiment's results/)")
       ->required();
   app.add_option("--log", o.log_path, "the log to write")->required();
-  app.add_flag("--force", o.force, "use a result written by another robozoo version (its champion must still "
-                                   "evaluate to the committed fitness)");
+  app.add_flag("--force", o.force,
+               "use a result written by another robozoo version (its champion must still "
+               "evaluate to the committed fitness)");
 }
 
 int run_champion_command(const ChampionOptions& o) {

@@ -16,8 +16,9 @@
 namespace robozoo {
 
 void add_eval_options(CLI::App& app, EvalOptions& o) {
-  app.add_option("--random", o.random_seed, "seed of a random genome: an initial genome after --mutations rounds "
-                                            "of NEAT mutations (default 1)");
+  app.add_option("--random", o.random_seed,
+                 "seed of a random genome: an initial genome after --mutations rounds "
+                 "of NEAT mutations (default 1)");
   app.add_option("--regime", o.regime, "regime of the random genome's mutations")
       ->check(CLI::IsMember({"feedforward", "recurrent"}));
   app.add_option("--mutations", o.mutations, "mutation rounds of the random genome")->check(CLI::Range(0, 100000));
@@ -39,18 +40,22 @@ nlohmann::json describe(const Genome& g, const Robot& robot, const Evaluation& e
   for (int i = 0; i < robot.w_neuron_neuron.size(); ++i) nn_links += robot.w_neuron_neuron.data()[i] != 0.0;
   for (int i = 0; i < robot.w_sensor_neuron.size(); ++i) sn_links += robot.w_sensor_neuron.data()[i] != 0.0;
   nlohmann::json j;
-  j["genome"] = {{"id", g.id}, {"nodes", g.nodes.size()}, {"hidden_nodes", count_hidden(g)},
-                 {"links", g.links.size()}, {"enabled_links", count_enabled_links(g)}, {"cyclic", has_cycle(g)}};
-  j["morphology"] = {{"spheres", robot.spheres.size()},
-                     {"leaves", leaves},
-                     {"bodies", robot.num_bodies},
-                     {"joints", robot.joints.size()},
-                     {"neurons", robot.neurons.size()},
-                     {"sensors",
-                      {{"distance", per_type[0]}, {"touch", per_type[1]}, {"proprioceptive", per_type[2]},
-                       {"time", per_type[3]}}},
-                     {"neuron_neuron_links", nn_links},
-                     {"sensor_neuron_links", sn_links}};
+  j["genome"] = {{"id", g.id},
+                 {"nodes", g.nodes.size()},
+                 {"hidden_nodes", count_hidden(g)},
+                 {"links", g.links.size()},
+                 {"enabled_links", count_enabled_links(g)},
+                 {"cyclic", has_cycle(g)}};
+  j["morphology"] = {
+      {"spheres", robot.spheres.size()},
+      {"leaves", leaves},
+      {"bodies", robot.num_bodies},
+      {"joints", robot.joints.size()},
+      {"neurons", robot.neurons.size()},
+      {"sensors",
+       {{"distance", per_type[0]}, {"touch", per_type[1]}, {"proprioceptive", per_type[2]}, {"time", per_type[3]}}},
+      {"neuron_neuron_links", nn_links},
+      {"sensor_neuron_links", sn_links}};
   j["r"] = e.r;
   j["simulated"] = e.outcome != Outcome::NotSimulated;
   j["outcome"] = outcome_name(e.outcome);

@@ -26,8 +26,10 @@ int main(int argc, char** argv) {
     try {
       robozoo::block_stop_signals();  // before MPI starts its threads: they inherit the mask
       session = std::make_unique<robozoo::MpiSession>(&argc, &argv);
-      if (session->rank() == 0) watcher = std::make_unique<robozoo::StopWatcher>("robozoo-evolve");
-      else robozoo::unblock_stop_signals();  // worker ranks: SIGTERM ends them as usual
+      if (session->rank() == 0)
+        watcher = std::make_unique<robozoo::StopWatcher>("robozoo-evolve");
+      else
+        robozoo::unblock_stop_signals();  // worker ranks: SIGTERM ends them as usual
     } catch (const std::exception& e) {
       std::cerr << "robozoo-evolve: --mpi: " << e.what() << "\n";
       return 2;
@@ -45,15 +47,17 @@ int main(int argc, char** argv) {
   robozoo::RunOptions run;
   robozoo::add_run_options(app, run);
   robozoo::EvalOptions eval;
-  CLI::App* eval_cmd = app.add_subcommand(
-      "eval", "Grow and simulate one genome (random from a seed, or from a genome JSON file), print "
-              "its morphology, outcome and fitness");
+  CLI::App* eval_cmd =
+      app.add_subcommand("eval",
+                         "Grow and simulate one genome (random from a seed, or from a genome JSON file), print "
+                         "its morphology, outcome and fitness");
   robozoo::add_eval_options(*eval_cmd, eval);
   robozoo::ChampionOptions champion;
-  CLI::App* champion_cmd = app.add_subcommand(
-      "champion", "Write the best-of-run champion of a compact result (robozoo-experiment's results/) as a "
-                  "one-generation log for robozoo-render video, robozoo-replay check and robozoo-view, after "
-                  "checking that this build evaluates it to the committed fitness");
+  CLI::App* champion_cmd =
+      app.add_subcommand("champion",
+                         "Write the best-of-run champion of a compact result (robozoo-experiment's results/) as a "
+                         "one-generation log for robozoo-render video, robozoo-replay check and robozoo-view, after "
+                         "checking that this build evaluates it to the committed fitness");
   robozoo::add_champion_options(*champion_cmd, champion);
   try {
     app.parse(argc, argv);

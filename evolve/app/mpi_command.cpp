@@ -89,8 +89,7 @@ int run_mpi_worker(const MpiSession& session) {
     serve_mpi_session([](const std::string& setup) { return WorkFn(eval_work_from_setup(setup)); });
     return 0;
   } catch (const std::exception& e) {
-    std::cerr << "robozoo-evolve: rank " << session.rank() << " on " << session.host() << ": " << e.what()
-              << "\n";
+    std::cerr << "robozoo-evolve: rank " << session.rank() << " on " << session.host() << ": " << e.what() << "\n";
     session.abort(1);
   }
 }

@@ -38,7 +38,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--population", o.population, "genomes per generation (paper: 150)")->check(CLI::Range(2, 1000000));
   app.add_option("--generations", o.generations,
                  "generations to run (paper: 500); with --resume, more than the checkpoint's extends the run "
-                 "(a finished one too) to what an uninterrupted run of that many generations logs")->check(CLI::Range(1, 1000000000));
+                 "(a finished one too) to what an uninterrupted run of that many generations logs")
+      ->check(CLI::Range(1, 1000000000));
   app.add_option("--steps", o.steps, "physics steps of 0.01 s per evaluation (paper: 2500)")
       ->check(CLI::Range(1, 1000000000));
   app.add_option("--workers", o.workers, "worker processes evaluating genomes (default: number of cores)")
@@ -176,8 +177,7 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
         config.generations = o.generations;
       }
     }
-    if (!o.resume && std::filesystem::exists(checkpoint) &&
-        std::filesystem::exists(opts.log_path)) {
+    if (!o.resume && std::filesystem::exists(checkpoint) && std::filesystem::exists(opts.log_path)) {
       // Refuse to silently overwrite a run that could be resumed.
       std::cerr << "robozoo-evolve: " << opts.log_path
                 << " already holds a run; use --resume to continue it, or another --log\n";

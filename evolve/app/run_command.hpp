@@ -22,7 +22,7 @@ struct RunOptions {
   std::string log_path;
   std::string lcm_url;
   int pose_every = 4;
-  double bus_rate = 1e6;  ///< --bus-rate (bytes/s)
+  double bus_rate = 1e6;         ///< --bus-rate (bytes/s)
   double bus_message_rate = 50;  ///< --bus-message-rate (messages/s)
   bool publish_all = false;
   bool resume = false;

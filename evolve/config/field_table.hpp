@@ -36,50 +36,47 @@ class FieldTable {
   static constexpr double kInf = std::numeric_limits<double>::infinity();
 
   /// A real field in [lo, hi] (open ends when lo_open / hi_open).
-  FieldTable& real(const std::string& name, double S::*m, double lo, double hi,
-                   bool lo_open = false, bool hi_open = false) {
-    fields_[name] = {
-        [m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
-        [q = qualified(name), m, lo, hi, lo_open, hi_open](S& s, const nlohmann::json& v) {
-          if (!v.is_number()) fail(q, "must be a number, got " + shown(v));
-          const double x = v.get<double>();
-          const bool below = lo_open ? !(x > lo) : !(x >= lo);
-          const bool above = hi_open ? !(x < hi) : !(x <= hi);
-          if (!std::isfinite(x) || below || above)
-            fail(q, "must be in " + std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) +
-                           (hi_open ? ")" : "]") + ", got " + shown(v));
-          s.*m = x;
-        }};
+  FieldTable& real(const std::string& name, double S::*m, double lo, double hi, bool lo_open = false,
+                   bool hi_open = false) {
+    fields_[name] = {[m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
+                     [q = qualified(name), m, lo, hi, lo_open, hi_open](S& s, const nlohmann::json& v) {
+                       if (!v.is_number()) fail(q, "must be a number, got " + shown(v));
+                       const double x = v.get<double>();
+                       const bool below = lo_open ? !(x > lo) : !(x >= lo);
+                       const bool above = hi_open ? !(x < hi) : !(x <= hi);
+                       if (!std::isfinite(x) || below || above)
+                         fail(q, "must be in " + std::string(lo_open ? "(" : "[") + num(lo) + ", " + num(hi) +
+                                     (hi_open ? ")" : "]") + ", got " + shown(v));
+                       s.*m = x;
+                     }};
     return *this;
   }
   /// An integer field in [lo, hi].
   template <class I>
   FieldTable& integer(const std::string& name, I S::*m, long long lo, long long hi) {
-    fields_[name] = {
-        [m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
-        [q = qualified(name), m, lo, hi](S& s, const nlohmann::json& v) {
-          if (!v.is_number_integer()) fail(q, "must be an integer, got " + shown(v));
-          const long long x = v.get<long long>();
-          if (x < lo || x > hi)
-            fail(q, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + shown(v));
-          s.*m = static_cast<I>(x);
-        }};
+    fields_[name] = {[m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
+                     [q = qualified(name), m, lo, hi](S& s, const nlohmann::json& v) {
+                       if (!v.is_number_integer()) fail(q, "must be an integer, got " + shown(v));
+                       const long long x = v.get<long long>();
+                       if (x < lo || x > hi)
+                         fail(q,
+                              "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + shown(v));
+                       s.*m = static_cast<I>(x);
+                     }};
     return *this;
   }
   FieldTable& boolean(const std::string& name, bool S::*m) {
-    fields_[name] = {
-        [m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
-        [q = qualified(name), m](S& s, const nlohmann::json& v) {
-          if (!v.is_boolean()) fail(q, "must be true or false, got " + shown(v));
-          s.*m = v.get<bool>();
-        }};
+    fields_[name] = {[m](nlohmann::json& j, const S& s, const std::string& n) { j[n] = s.*m; },
+                     [q = qualified(name), m](S& s, const nlohmann::json& v) {
+                       if (!v.is_boolean()) fail(q, "must be true or false, got " + shown(v));
+                       s.*m = v.get<bool>();
+                     }};
     return *this;
   }
   /// An enumerated field written and read by name (`name_of` / `from_name`,
   /// which throws std::invalid_argument listing the names).
   template <class E>
-  FieldTable& choice(const std::string& name, E S::*m, std::string (*name_of)(E),
-                     E (*from_name)(const std::string&)) {
+  FieldTable& choice(const std::string& name, E S::*m, std::string (*name_of)(E), E (*from_name)(const std::string&)) {
     return custom(
         name, [m, name_of](const S& s) { return nlohmann::json(name_of(s.*m)); },
         [m, from_name](S& s, const nlohmann::json& v, const std::string& q) {
@@ -93,12 +90,10 @@ class FieldTable {
   }
 
   /// A field with its own conversion; `read` gets the qualified key for its errors.
-  FieldTable& custom(const std::string& name,
-                     std::function<nlohmann::json(const S&)> write,
+  FieldTable& custom(const std::string& name, std::function<nlohmann::json(const S&)> write,
                      std::function<void(S&, const nlohmann::json&, const std::string&)> read) {
-    fields_[name] = {
-        [write](nlohmann::json& j, const S& s, const std::string& n) { j[n] = write(s); },
-        [read, q = qualified(name)](S& s, const nlohmann::json& v) { read(s, v, q); }};
+    fields_[name] = {[write](nlohmann::json& j, const S& s, const std::string& n) { j[n] = write(s); },
+                     [read, q = qualified(name)](S& s, const nlohmann::json& v) { read(s, v, q); }};
     return *this;
   }
 
@@ -118,9 +113,7 @@ class FieldTable {
   [[noreturn]] static void fail(const std::string& qualified_name, const std::string& what) {
     throw_config_error(qualified_name + ": " + what);
   }
-  std::string qualified(const std::string& name) const {
-    return section_.empty() ? name : section_ + "." + name;
-  }
+  std::string qualified(const std::string& name) const { return section_.empty() ? name : section_ + "." + name; }
 
  private:
   static std::string num(double x) {

@@ -187,25 +187,26 @@ FieldTable<RunConfig> top_table() {
            throw_config_error(q + ": " + e.what());
          }
        })
-      .integer("seed", &RunConfig::seed, std::numeric_limits<long long>::min(),
-               std::numeric_limits<long long>::max())
+      .integer("seed", &RunConfig::seed, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max())
       .integer("generations", &RunConfig::generations, 1, kBig)
       .integer("pose_every", &RunConfig::pose_every, 1, kBig)
       .boolean("publish_all", &RunConfig::publish_all)
-      .custom("cppn_updates", [](const RunConfig& c) { return nlohmann::json(c.eval.cppn_updates); },
-              [](RunConfig& c, const nlohmann::json& v, const std::string& q) {
-                if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000)
-                  throw_config_error(q + ": must be an integer in [1, 1000], got " + shown(v));
-                c.eval.cppn_updates = v.get<int>();
-              })
-      .custom("neat", [](const RunConfig& c) { return neat_table().write(c.neat); },
-              [](RunConfig& c, const nlohmann::json& v, const std::string&) { read_neat(c.neat, v); })
-      .custom("growth", [](const RunConfig& c) { return growth_table().write(c.eval.growth); },
-              [](RunConfig& c, const nlohmann::json& v, const std::string&) {
-                growth_table().read(c.eval.growth, v);
-              })
-      .custom("sim", [](const RunConfig& c) { return sim_table().write(c.eval.sim); },
-              [](RunConfig& c, const nlohmann::json& v, const std::string&) { sim_table().read(c.eval.sim, v); });
+      .custom(
+          "cppn_updates", [](const RunConfig& c) { return nlohmann::json(c.eval.cppn_updates); },
+          [](RunConfig& c, const nlohmann::json& v, const std::string& q) {
+            if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000)
+              throw_config_error(q + ": must be an integer in [1, 1000], got " + shown(v));
+            c.eval.cppn_updates = v.get<int>();
+          })
+      .custom(
+          "neat", [](const RunConfig& c) { return neat_table().write(c.neat); },
+          [](RunConfig& c, const nlohmann::json& v, const std::string&) { read_neat(c.neat, v); })
+      .custom(
+          "growth", [](const RunConfig& c) { return growth_table().write(c.eval.growth); },
+          [](RunConfig& c, const nlohmann::json& v, const std::string&) { growth_table().read(c.eval.growth, v); })
+      .custom(
+          "sim", [](const RunConfig& c) { return sim_table().write(c.eval.sim); },
+          [](RunConfig& c, const nlohmann::json& v, const std::string&) { sim_table().read(c.eval.sim, v); });
   return t;
 }
 

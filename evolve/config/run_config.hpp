@@ -47,7 +47,7 @@ nlohmann::json config_assignment(const std::string& assignment);
 /// Checks cross-field constraints (r_min <= r_init <= r_max, ...); throws ConfigError.
 void validate_config(const RunConfig& c);
 
-std::string regime_name(Regime r);       ///< "feedforward" / "recurrent"
+std::string regime_name(Regime r);              ///< "feedforward" / "recurrent"
 Regime regime_from_name(const std::string& s);  ///< throws ConfigError
 
 }  // namespace robozoo

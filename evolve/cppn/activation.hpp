@@ -12,11 +12,11 @@ namespace robozoo {
 
 /// Activation codes are part of the log format: never renumber.
 enum class Activation : int8_t {
-  SignedSigmoid = 0,  ///< 2 / (1 + e^-x) - 1, in (-1, 1)
-  SignedCosine = 1,   ///< cos(x)
-  Gaussian = 2,       ///< exp(-x^2)
-  Linear = 3,         ///< x (off by default; available for experiments and tests)
-  Sine = 4,           ///< sin(x) (off by default)
+  SignedSigmoid = 0,     ///< 2 / (1 + e^-x) - 1, in (-1, 1)
+  SignedCosine = 1,      ///< cos(x)
+  Gaussian = 2,          ///< exp(-x^2)
+  Linear = 3,            ///< x (off by default; available for experiments and tests)
+  Sine = 4,              ///< sin(x) (off by default)
   SteepenedSigmoid = 5,  ///< 1 / (1 + e^(-4.9 x)), in (0, 1): the NEAT paper's (robozoo-xor --preset neat-paper)
 };
 constexpr int kNumActivations = 6;

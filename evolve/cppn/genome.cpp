@@ -16,8 +16,8 @@ void validate_genome(const Genome& g, const GenomeLayout& layout) {
   };
   const int fixed = layout.num_inputs + layout.num_outputs;
   if (static_cast<int>(g.nodes.size()) < fixed)
-    fail("has " + std::to_string(g.nodes.size()) + " nodes, fewer than the " +
-         std::to_string(fixed) + " inputs and outputs");
+    fail("has " + std::to_string(g.nodes.size()) + " nodes, fewer than the " + std::to_string(fixed) +
+         " inputs and outputs");
   std::unordered_map<int32_t, NodeKind> kind;
   for (size_t i = 0; i < g.nodes.size(); ++i) {
     const NodeGene& n = g.nodes[i];
@@ -37,12 +37,11 @@ void validate_genome(const Genome& g, const GenomeLayout& layout) {
       want = NodeKind::Hidden;
     }
     if (n.kind != want)
-      fail("node " + std::to_string(n.id) + " has kind " + std::to_string(static_cast<int>(n.kind)) +
-           ", expected " + std::to_string(static_cast<int>(want)));
+      fail("node " + std::to_string(n.id) + " has kind " + std::to_string(static_cast<int>(n.kind)) + ", expected " +
+           std::to_string(static_cast<int>(want)));
     const bool fixed_position = want != NodeKind::Hidden;
     const double want_position = want == NodeKind::Output ? kOutputPosition : kInputPosition;
-    if (fixed_position ? n.position != want_position
-                       : !(n.position >= kInputPosition && n.position <= kOutputPosition))
+    if (fixed_position ? n.position != want_position : !(n.position >= kInputPosition && n.position <= kOutputPosition))
       fail("node " + std::to_string(n.id) + " has drawing position " + std::to_string(n.position) +
            (fixed_position ? ", expected " + std::to_string(want_position) : ", expected one in [0, 1]"));
     kind[n.id] = n.kind;
@@ -52,8 +51,10 @@ void validate_genome(const Genome& g, const GenomeLayout& layout) {
     if (i > 0 && l.innovation <= g.links[i - 1].innovation)
       fail("link innovations not strictly increasing at innovation " + std::to_string(l.innovation));
     auto from = kind.find(l.from), to = kind.find(l.to);
-    if (from == kind.end()) fail("link " + std::to_string(l.innovation) + " comes from missing node " + std::to_string(l.from));
-    if (to == kind.end()) fail("link " + std::to_string(l.innovation) + " goes to missing node " + std::to_string(l.to));
+    if (from == kind.end())
+      fail("link " + std::to_string(l.innovation) + " comes from missing node " + std::to_string(l.from));
+    if (to == kind.end())
+      fail("link " + std::to_string(l.innovation) + " goes to missing node " + std::to_string(l.to));
     if (to->second == NodeKind::Input || to->second == NodeKind::Bias)
       fail("link " + std::to_string(l.innovation) + " goes into input node " + std::to_string(l.to));
     if (!std::isfinite(l.weight)) fail("link " + std::to_string(l.innovation) + " has a non-finite weight");
@@ -95,9 +96,15 @@ struct Fnv {
   uint64_t h = 1469598103934665603ull;
   void bytes(const void* p, size_t n) {
     const auto* c = static_cast<const unsigned char*>(p);
-    for (size_t i = 0; i < n; ++i) { h ^= c[i]; h *= 1099511628211ull; }
+    for (size_t i = 0; i < n; ++i) {
+      h ^= c[i];
+      h *= 1099511628211ull;
+    }
   }
-  template <class T> void add(T v) { bytes(&v, sizeof v); }
+  template <class T>
+  void add(T v) {
+    bytes(&v, sizeof v);
+  }
 };
 }  // namespace
 
@@ -128,16 +135,14 @@ uint64_t genome_hash(const Genome& g) {
 }
 
 double node_position(const Genome& g, int32_t id) {
-  const auto it = std::lower_bound(g.nodes.begin(), g.nodes.end(), id,
-                                   [](const NodeGene& n, int32_t v) { return n.id < v; });
+  const auto it =
+      std::lower_bound(g.nodes.begin(), g.nodes.end(), id, [](const NodeGene& n, int32_t v) { return n.id < v; });
   if (it == g.nodes.end() || it->id != id)
     throw std::invalid_argument("genome " + std::to_string(g.id) + " has no node " + std::to_string(id));
   return it->position;
 }
 
-bool is_forward_link(const Genome& g, const LinkGene& l) {
-  return node_position(g, l.from) < node_position(g, l.to);
-}
+bool is_forward_link(const Genome& g, const LinkGene& l) { return node_position(g, l.from) < node_position(g, l.to); }
 
 int count_recurrent_links(const Genome& g) {
   int n = 0;

@@ -40,8 +40,8 @@ struct LinkGene {
   bool enabled = true;
   int32_t born = 0;  ///< generation the gene first appeared in (for age-dependent mutation)
   bool operator==(const LinkGene& o) const {
-    return innovation == o.innovation && from == o.from && to == o.to && weight == o.weight &&
-           enabled == o.enabled && born == o.born;
+    return innovation == o.innovation && from == o.from && to == o.to && weight == o.weight && enabled == o.enabled &&
+           born == o.born;
   }
 };
 
@@ -53,8 +53,8 @@ struct GenomeLayout {
   Activation output_activation = Activation::SignedSigmoid;
   int first_hidden() const { return num_inputs + num_outputs; }
   bool operator==(const GenomeLayout& o) const {
-    return num_inputs == o.num_inputs && bias_input == o.bias_input &&
-           num_outputs == o.num_outputs && output_activation == o.output_activation;
+    return num_inputs == o.num_inputs && bias_input == o.bias_input && num_outputs == o.num_outputs &&
+           output_activation == o.output_activation;
   }
 };
 
@@ -66,9 +66,7 @@ struct Genome {
   int64_t id = -1;
   std::vector<NodeGene> nodes;  ///< sorted by id
   std::vector<LinkGene> links;  ///< sorted by innovation
-  bool operator==(const Genome& o) const {
-    return id == o.id && nodes == o.nodes && links == o.links;
-  }
+  bool operator==(const Genome& o) const { return id == o.id && nodes == o.nodes && links == o.links; }
 };
 
 /// Checks a genome against a layout: node ids unique, sorted, the fixed inputs and

@@ -67,7 +67,10 @@ Network::Network(const Genome& g, const GenomeLayout& layout, int updates)
   for (int v = num_inputs_; v < n; ++v)
     for (int k = in_begin_[v]; k < in_begin_[v + 1]; ++k) {
       const int u = in_from_[k];
-      if (u >= num_inputs_) { ++indeg[v]; out[u].push_back(v); }
+      if (u >= num_inputs_) {
+        ++indeg[v];
+        out[u].push_back(v);
+      }
     }
   std::vector<int> ready;
   for (int v = num_inputs_; v < n; ++v)
@@ -107,17 +110,14 @@ int Network::num_outputs() const { return num_outputs_; }
 
 void Network::query_batch(const QueryInputs& inputs, QueryOutputs outputs) { run(inputs, outputs, false); }
 
-void Network::query_batch_synchronous(const QueryInputs& inputs, QueryOutputs outputs) {
-  run(inputs, outputs, true);
-}
+void Network::query_batch_synchronous(const QueryInputs& inputs, QueryOutputs outputs) { run(inputs, outputs, true); }
 
 void Network::run(const QueryInputs& inputs, QueryOutputs& outputs, bool synchronous) {
   if (inputs.rows() != num_inputs_ || outputs.rows() != num_outputs_ || outputs.cols() != inputs.cols())
-    throw std::invalid_argument("CPPN batch of " + std::to_string(inputs.rows()) + " x " +
-                                std::to_string(inputs.cols()) + " inputs and " +
-                                std::to_string(outputs.rows()) + " x " + std::to_string(outputs.cols()) +
-                                " outputs, expected " + std::to_string(num_inputs_) + " and " +
-                                std::to_string(num_outputs_) + " rows of equal length");
+    throw std::invalid_argument(
+        "CPPN batch of " + std::to_string(inputs.rows()) + " x " + std::to_string(inputs.cols()) + " inputs and " +
+        std::to_string(outputs.rows()) + " x " + std::to_string(outputs.cols()) + " outputs, expected " +
+        std::to_string(num_inputs_) + " and " + std::to_string(num_outputs_) + " rows of equal length");
   const double t0 = timing_ ? thread_cpu_seconds() : 0.0;
   const int total = static_cast<int>(inputs.cols());
   for (int first = 0; first < total; first += kBlockPoints) {
@@ -125,8 +125,7 @@ void Network::run(const QueryInputs& inputs, QueryOutputs& outputs, bool synchro
     load_block(inputs, first, m);
     if (single_pass_ && !synchronous) {
       single_pass_block(m);
-      for (int o = 0; o < num_outputs_; ++o)
-        outputs.row(o).segment(first, m) = val_[0].row(num_inputs_ + o).head(m);
+      for (int o = 0; o < num_outputs_; ++o) outputs.row(o).segment(first, m) = val_[0].row(num_inputs_ + o).head(m);
     } else {
       synchronous_block(outputs, first, m);
     }
@@ -176,8 +175,7 @@ void Network::add_terms(double* s, int k0, int k1, const double* const* rows, bo
       case 4:
         for (int p = 0; p < m; ++p) d[p] = (((d[p] + w[0] * a[p]) + w[1] * b[p]) + w[2] * e[p]) + w[3] * f[p];
         break;
-      default:
-        break;
+      default: break;
     }
     c = 0;
   };
@@ -305,8 +303,8 @@ void Network::query_reference(const double* inputs, double* outputs) {
 
 std::vector<double> Network::query(const std::vector<double>& inputs) {
   if (static_cast<int>(inputs.size()) != num_inputs_)
-    throw std::invalid_argument("CPPN query with " + std::to_string(inputs.size()) +
-                                " inputs, expected " + std::to_string(num_inputs_));
+    throw std::invalid_argument("CPPN query with " + std::to_string(inputs.size()) + " inputs, expected " +
+                                std::to_string(num_inputs_));
   std::vector<double> out(static_cast<size_t>(num_outputs_));
   query(inputs.data(), out.data());
   return out;

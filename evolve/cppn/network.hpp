@@ -94,25 +94,25 @@ class Network {
   void activate_node_row(int v, double* s, int m) const;
 
   int num_inputs_ = 0, num_outputs_ = 0, updates_ = 10;
-  std::vector<int> act_;            // activation code per compact node index
-  std::vector<int> in_begin_;       // CSR over nodes: incoming links, in innovation order
+  std::vector<int> act_;       // activation code per compact node index
+  std::vector<int> in_begin_;  // CSR over nodes: incoming links, in innovation order
   std::vector<int> in_from_;
   std::vector<double> in_weight_;
-  std::vector<int> prefix_end_;     // per node: end of the leading run of links from inputs
-  std::vector<int> order_;          // evaluation order for the single-pass path
-  bool single_pass_ = false;        // acyclic and depth <= updates: one pass is bit-identical
+  std::vector<int> prefix_end_;  // per node: end of the leading run of links from inputs
+  std::vector<int> order_;       // evaluation order for the single-pass path
+  bool single_pass_ = false;     // acyclic and depth <= updates: one pass is bit-identical
 
   // Block scratch (nodes x kBlockPoints, row-major), sized once.
-  QueryArray in_;                   // the block's inputs
-  QueryArray base_;                 // per node: sum of its leading input links
-  QueryArray val_[2];               // node values: previous and current update
-  std::vector<char> in_zero_;       // per input: zero at every point of the block
-  std::vector<char> changed_[2];    // per node: changed at some point in the previous / this update
-  std::vector<char> point_changed_; // per point: some node changed in this update
-  std::vector<int> point_;          // per active column: the point's column in the batch
-  std::vector<const double*> rows_; // per node: its row of values read by this update
+  QueryArray in_;                    // the block's inputs
+  QueryArray base_;                  // per node: sum of its leading input links
+  QueryArray val_[2];                // node values: previous and current update
+  std::vector<char> in_zero_;        // per input: zero at every point of the block
+  std::vector<char> changed_[2];     // per node: changed at some point in the previous / this update
+  std::vector<char> point_changed_;  // per point: some node changed in this update
+  std::vector<int> point_;           // per active column: the point's column in the batch
+  std::vector<const double*> rows_;  // per node: its row of values read by this update
 
-  QueryArray one_in_, one_out_;     // a batch of one for query(const double*, double*)
+  QueryArray one_in_, one_out_;             // a batch of one for query(const double*, double*)
   std::vector<double> ref_cur_, ref_prev_;  // query_reference's state
   long long queries_ = 0;
   bool timing_ = false;

@@ -6,21 +6,19 @@
 
 namespace robozoo {
 
-Genome random_cppn(const GenomeLayout& layout, bool recurrent, int hidden_nodes,
-                   int extra_links, Rng& rng) {
+Genome random_cppn(const GenomeLayout& layout, bool recurrent, int hidden_nodes, int extra_links, Rng& rng) {
   if (hidden_nodes < 0) throw std::invalid_argument("random_cppn: hidden_nodes must not be negative");
   if (extra_links < 0) throw std::invalid_argument("random_cppn: extra_links must not be negative");
   const int ni = layout.num_inputs, no = layout.num_outputs, h0 = layout.first_hidden();
 
   Genome g;
   for (int i = 0; i < ni; ++i)
-    g.nodes.push_back({i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear,
-                       kInputPosition});
-  for (int o = 0; o < no; ++o)
-    g.nodes.push_back({ni + o, NodeKind::Output, layout.output_activation, kOutputPosition});
+    g.nodes.push_back(
+        {i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear, kInputPosition});
+  for (int o = 0; o < no; ++o) g.nodes.push_back({ni + o, NodeKind::Output, layout.output_activation, kOutputPosition});
   for (int h = 0; h < hidden_nodes; ++h)
-    g.nodes.push_back({h0 + h, NodeKind::Hidden, static_cast<Activation>(rng.uniform_int(0, 2)),
-                       (h + 1.0) / (hidden_nodes + 1.0)});
+    g.nodes.push_back(
+        {h0 + h, NodeKind::Hidden, static_cast<Activation>(rng.uniform_int(0, 2)), (h + 1.0) / (hidden_nodes + 1.0)});
 
   std::set<std::pair<int32_t, int32_t>> linked;
   int64_t innovation = 0;

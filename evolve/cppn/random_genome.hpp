@@ -21,7 +21,6 @@ namespace robozoo {
 /// Weights of hidden and extra links are uniform in [-3, 3); ids, innovations and
 /// weights depend only on the arguments and the generator's state.
 /// Throws std::invalid_argument if hidden_nodes or extra_links is negative.
-Genome random_cppn(const GenomeLayout& layout, bool recurrent, int hidden_nodes,
-                   int extra_links, Rng& rng);
+Genome random_cppn(const GenomeLayout& layout, bool recurrent, int hidden_nodes, int extra_links, Rng& rng);
 
 }  // namespace robozoo

@@ -16,12 +16,12 @@ struct EvalParams {
 };
 
 struct Evaluation {
-  double fitness = 0.0;   ///< r + d
+  double fitness = 0.0;  ///< r + d
   double r = 0.0;
   double d = 0.0;
   Outcome outcome = Outcome::NotSimulated;
   int num_spheres = 0, num_bodies = 0, num_joints = 0, num_sensors = 0;
-  SimResult sim;          ///< empty when not simulated
+  SimResult sim;  ///< empty when not simulated
 };
 
 Evaluation evaluate(const Genome& genome, const EvalParams& params);

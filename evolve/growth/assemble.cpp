@@ -27,11 +27,10 @@ Robot assemble_robot(const GrownBody& body) {
       const Neuron& m = body.motors[s.index];
       robot.neurons.push_back(Neuron{s.index, m.tau, m.omega});
     } else if (s.sensors & kSensorProprio) {
-      throw std::logic_error("assemble_robot: proprioceptive sensor on unjointed sphere " +
-                             std::to_string(s.index));
+      throw std::logic_error("assemble_robot: proprioceptive sensor on unjointed sphere " + std::to_string(s.index));
     }
-    static constexpr SensorType kTypes[] = {SensorType::Distance, SensorType::Touch,
-                                            SensorType::Proprio, SensorType::Time};
+    static constexpr SensorType kTypes[] = {SensorType::Distance, SensorType::Touch, SensorType::Proprio,
+                                            SensorType::Time};
     static constexpr uint8_t kBits[] = {kSensorDistance, kSensorTouch, kSensorProprio, kSensorTime};
     for (int t = 0; t < 4; ++t)
       if (s.sensors & kBits[t]) robot.sensors.push_back(Sensor{s.index, kTypes[t]});

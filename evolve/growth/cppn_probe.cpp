@@ -26,8 +26,7 @@ void CppnProbe::begin(int n) {
 }
 
 void CppnProbe::set(int k, const Eigen::Vector3d& p, double r_parent, const SensorType* one_hot) {
-  if (k < 0 || k >= n_)
-    throw std::out_of_range("CPPN batch point " + std::to_string(k) + " of " + std::to_string(n_));
+  if (k < 0 || k >= n_) throw std::out_of_range("CPPN batch point " + std::to_string(k) + " of " + std::to_string(n_));
   in_(kInX, k) = p.x();
   in_(kInY, k) = p.y();
   in_(kInZ, k) = p.z();

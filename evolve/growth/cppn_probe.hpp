@@ -40,9 +40,7 @@ class CppnProbe {
 
   /// One point: a batch of one (begin, set, run, outputs).
   void query(const Eigen::Vector3d& p, double r_parent, const SensorType* one_hot, CppnOutputs& out);
-  void query(const Eigen::Vector3d& p, double r_parent, CppnOutputs& out) {
-    query(p, r_parent, nullptr, out);
-  }
+  void query(const Eigen::Vector3d& p, double r_parent, CppnOutputs& out) { query(p, r_parent, nullptr, out); }
 
   /// Points queried so far (for benchmarks and tests).
   long long count() const { return count_; }

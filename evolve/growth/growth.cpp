@@ -16,9 +16,9 @@ Robot grow(Network& cppn, const GrowthParams& params) {
   GrownBody body = grow_body(probe, params);  // steps 1-4
   prune_leaf_joints(body);                    // step 5
   Robot robot = assemble_robot(body);
-  set_ctrnn_weights(robot, probe, params);    // step 6, in the growth frame
-  score_r_term(robot);                        // paper 2.4
-  rest_on_ground(robot);                      // step 7
+  set_ctrnn_weights(robot, probe, params);  // step 6, in the growth frame
+  score_r_term(robot);                      // paper 2.4
+  rest_on_ground(robot);                    // step 7
   return robot;
 }
 

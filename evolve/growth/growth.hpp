@@ -9,14 +9,29 @@ namespace robozoo {
 
 /// CPPN output indices (node id minus 9), docs/method.md section 2.
 enum CppnOutput : int {
-  kOutMatter = 0, kOutRadius = 1, kOutJoint = 2, kOutTheta = 3, kOutTau = 4, kOutOmega = 5,
-  kOutSensorDistance = 6, kOutSensorTouch = 7, kOutSensorProprio = 8, kOutSensorTime = 9,
+  kOutMatter = 0,
+  kOutRadius = 1,
+  kOutJoint = 2,
+  kOutTheta = 3,
+  kOutTau = 4,
+  kOutOmega = 5,
+  kOutSensorDistance = 6,
+  kOutSensorTouch = 7,
+  kOutSensorProprio = 8,
+  kOutSensorTime = 9,
   kOutWeight = 10,
 };
 /// CPPN input indices.
 enum CppnInput : int {
-  kInX = 0, kInY = 1, kInZ = 2, kInRParent = 3, kInBias = 4,
-  kInSensorDistance = 5, kInSensorTouch = 6, kInSensorProprio = 7, kInSensorTime = 8,
+  kInX = 0,
+  kInY = 1,
+  kInZ = 2,
+  kInRParent = 3,
+  kInBias = 4,
+  kInSensorDistance = 5,
+  kInSensorTouch = 6,
+  kInSensorProprio = 7,
+  kInSensorTime = 8,
 };
 
 /// Grows a robot. `cppn` must have the robot layout (9 inputs, 11 outputs).

@@ -21,9 +21,7 @@ Eigen::Vector3d hinge_axis(const Eigen::Vector3d& parent_to_child, double theta)
   return axis.normalized();
 }
 
-double hinge_range(double j, const GrowthParams& p) {
-  return (j - p.t_joint) / (1.0 - p.t_joint) * p.max_joint_range;
-}
+double hinge_range(double j, const GrowthParams& p) { return (j - p.t_joint) / (1.0 - p.t_joint) * p.max_joint_range; }
 
 double motor_tau(double tau_out, const GrowthParams& p) {
   return p.tau_min + (p.tau_max - p.tau_min) * (tau_out + 1.0) / 2.0;

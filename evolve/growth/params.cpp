@@ -6,13 +6,11 @@
 namespace robozoo {
 
 void validate_growth_params(const GrowthParams& p) {
-  auto fail = [](const std::string& what) {
-    throw std::invalid_argument("growth parameters: " + what);
-  };
-  const double reals[] = {p.r_init, p.r_min, p.r_max, p.t_matter, p.t_joint, p.t_sensor,
-                          p.weight_threshold, p.rho_min, p.rho_max, p.max_joint_range,
-                          p.tau_min, p.tau_max, p.bias_max, p.weight_max, p.bias_input,
-                          p.cloud_step, p.bound, p.touch_tolerance};
+  auto fail = [](const std::string& what) { throw std::invalid_argument("growth parameters: " + what); };
+  const double reals[] = {
+      p.r_init,           p.r_min,      p.r_max,      p.t_matter,        p.t_joint, p.t_sensor,
+      p.weight_threshold, p.rho_min,    p.rho_max,    p.max_joint_range, p.tau_min, p.tau_max,
+      p.bias_max,         p.weight_max, p.bias_input, p.cloud_step,      p.bound,   p.touch_tolerance};
   for (double v : reals)
     if (!std::isfinite(v)) fail("every value must be finite");
   if (!(p.r_min > 0)) fail("r_min must be positive");
@@ -29,8 +27,7 @@ void validate_growth_params(const GrowthParams& p) {
   if (!(p.cloud_step > 0)) fail("cloud_step must be positive");
   if (!(p.bound >= 0)) fail("bound must not be negative");
   if (p.max_spheres < 1) fail("max_spheres must be at least 1");
-  if (!(p.touch_tolerance >= 0 && p.touch_tolerance < 1e-3))
-    fail("touch_tolerance must lie in [0, 1e-3)");
+  if (!(p.touch_tolerance >= 0 && p.touch_tolerance < 1e-3)) fail("touch_tolerance must lie in [0, 1e-3)");
 }
 
 }  // namespace robozoo

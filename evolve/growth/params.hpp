@@ -6,24 +6,24 @@
 namespace robozoo {
 
 struct GrowthParams {
-  double r_init = 0.1;              ///< root radius (m)
-  double r_min = 0.05;              ///< smallest sphere radius (m)
-  double r_max = 0.5;               ///< largest sphere radius (m)
-  double t_matter = 0.7;            ///< matter threshold on output m
-  double t_joint = 0.7;             ///< joint threshold on output j
-  double t_sensor = 0.7;            ///< sensor-present threshold on the four sensor outputs
-  double weight_threshold = 0.2;    ///< |w| at or below this expresses no CTRNN link
-  double rho_min = 1.0;             ///< density at m = t_matter (mass per m^3)
-  double rho_max = 3.0;             ///< density at m = 1 (mass per m^3)
-  double max_joint_range = M_PI / 2;///< half range of motion at j = 1 (rad)
-  double tau_min = 0.05;            ///< motor neuron time constant at tau = -1 (s)
-  double tau_max = 1.0;             ///< motor neuron time constant at tau = +1 (s)
-  double bias_max = 3.0;            ///< motor neuron bias at omega = 1 (dimensionless)
-  double weight_max = 3.0;          ///< CTRNN weight at w = 1 (dimensionless)
-  double bias_input = 1.0;          ///< value of the CPPN's bias input
-  int cloud_points = 629;           ///< points per cloud (count), at angles k * cloud_step
-  double cloud_step = 0.01;         ///< angle between cloud points (rad)
-  double bound = 2.0;               ///< sphere centres must have |x|, |y| <= bound (m)
+  double r_init = 0.1;                ///< root radius (m)
+  double r_min = 0.05;                ///< smallest sphere radius (m)
+  double r_max = 0.5;                 ///< largest sphere radius (m)
+  double t_matter = 0.7;              ///< matter threshold on output m
+  double t_joint = 0.7;               ///< joint threshold on output j
+  double t_sensor = 0.7;              ///< sensor-present threshold on the four sensor outputs
+  double weight_threshold = 0.2;      ///< |w| at or below this expresses no CTRNN link
+  double rho_min = 1.0;               ///< density at m = t_matter (mass per m^3)
+  double rho_max = 3.0;               ///< density at m = 1 (mass per m^3)
+  double max_joint_range = M_PI / 2;  ///< half range of motion at j = 1 (rad)
+  double tau_min = 0.05;              ///< motor neuron time constant at tau = -1 (s)
+  double tau_max = 1.0;               ///< motor neuron time constant at tau = +1 (s)
+  double bias_max = 3.0;              ///< motor neuron bias at omega = 1 (dimensionless)
+  double weight_max = 3.0;            ///< CTRNN weight at w = 1 (dimensionless)
+  double bias_input = 1.0;            ///< value of the CPPN's bias input
+  int cloud_points = 629;             ///< points per cloud (count), at angles k * cloud_step
+  double cloud_step = 0.01;           ///< angle between cloud points (rad)
+  double bound = 2.0;                 ///< sphere centres must have |x|, |y| <= bound (m)
   /// Growth stops at this many spheres (count). The paper sets no cap; it binds for about
   /// half the robots that grow at all, at 50, 100 or 200 alike, so the counts of a robot at
   /// the cap are censored (docs/method.md section 2.3 step 4, docs/performance.md).

@@ -6,8 +6,7 @@
 namespace robozoo {
 
 Placement::Placement(double bound, int capacity, double touch_tolerance)
-    : bound_((1.0 + touch_tolerance) * bound),
-      shrink2_((1.0 - touch_tolerance) * (1.0 - touch_tolerance)) {
+    : bound_((1.0 + touch_tolerance) * bound), shrink2_((1.0 - touch_tolerance) * (1.0 - touch_tolerance)) {
   if (!(touch_tolerance >= 0 && touch_tolerance < 1e-3))
     throw std::invalid_argument("Placement: touch_tolerance must lie in [0, 1e-3)");
   const size_t n = capacity > 0 ? static_cast<size_t>(capacity) : 0;

@@ -58,13 +58,11 @@ class Placement {
   /// The component a component is hinged to; -1 for the root's component.
   int component_parent(int c) const { return comp_parent_[c]; }
   /// True if components c and d are joined by one hinge.
-  bool directly_joined(int c, int d) const {
-    return comp_parent_[c] == d || comp_parent_[d] == c;
-  }
+  bool directly_joined(int c, int d) const { return comp_parent_[c] == d || comp_parent_[d] == c; }
 
  private:
-  double bound_;       ///< (1 + e) * bound (m)
-  double shrink2_;     ///< (1 - e)^2
+  double bound_;    ///< (1 + e) * bound (m)
+  double shrink2_;  ///< (1 - e)^2
   std::vector<double> x_, y_, z_, r_;
   std::vector<int> comp_;
   std::vector<int> comp_parent_;

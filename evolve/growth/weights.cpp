@@ -29,8 +29,7 @@ void set_ctrnn_weights(Robot& robot, CppnProbe& probe, const GrowthParams& param
   for (Eigen::Index k = 0; k < ns; ++k) {
     const Sensor& s = robot.sensors[k];
     const Eigen::Vector3d& a = center(s.sphere);
-    for (Eigen::Index i = 0; i < nn; ++i)
-      probe.set(q++, (a + center(robot.neurons[i].sphere)) / 2.0, 0.0, &s.type);
+    for (Eigen::Index i = 0; i < nn; ++i) probe.set(q++, (a + center(robot.neurons[i].sphere)) / 2.0, 0.0, &s.type);
   }
   for (Eigen::Index j = 0; j < nn; ++j) {
     const Eigen::Vector3d& a = center(robot.neurons[j].sphere);
@@ -43,7 +42,8 @@ void set_ctrnn_weights(Robot& robot, CppnProbe& probe, const GrowthParams& param
       robot.w_sensor_neuron(k, i) = expressed_weight(probe.output(q++, kOutWeight), params);
   for (Eigen::Index j = 0; j < nn; ++j)
     for (Eigen::Index i = j; i < nn; ++i)
-      robot.w_neuron_neuron(j, i) = robot.w_neuron_neuron(i, j) = expressed_weight(probe.output(q++, kOutWeight), params);
+      robot.w_neuron_neuron(j, i) = robot.w_neuron_neuron(i, j) =
+          expressed_weight(probe.output(q++, kOutWeight), params);
 }
 
 }  // namespace robozoo

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
-namespace lcm { class LCM; }
+namespace lcm {
+class LCM;
+}
 
 namespace robozoo {
 

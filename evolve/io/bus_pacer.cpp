@@ -33,7 +33,7 @@ int64_t BusPacer::schedule(int64_t ready_us, size_t bytes) {
   if (wait_s > 0) {
     const int64_t before = t;
     t += static_cast<int64_t>(std::ceil(wait_s * 1e6 - 1e-6));  // whole microseconds, rounding noise aside
-    last_us_ = before;  // refill from the moment the tokens were counted
+    last_us_ = before;                                          // refill from the moment the tokens were counted
     started_ = true;
     refill(t);
   }

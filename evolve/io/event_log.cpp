@@ -191,7 +191,8 @@ int64_t timestamp_of_event_ending_at(const std::string& path, int64_t end) {
   std::vector<uint8_t> b(static_cast<size_t>(end - from));
   FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) return -1;
-  const bool ok = std::fseek(f, static_cast<long>(from), SEEK_SET) == 0 && std::fread(b.data(), 1, b.size(), f) == b.size();
+  const bool ok =
+      std::fseek(f, static_cast<long>(from), SEEK_SET) == 0 && std::fread(b.data(), 1, b.size(), f) == b.size();
   std::fclose(f);
   if (!ok) return -1;
   const auto be = [&](int64_t at, int n) {
@@ -209,8 +210,7 @@ int64_t timestamp_of_event_ending_at(const std::string& path, int64_t end) {
 }
 
 int64_t now_us() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
 

@@ -62,7 +62,7 @@ struct LogRecord {
 /// reads damaged logs with its own reader that skips to the next event.)
 struct LogContents {
   std::vector<LogRecord> records;
-  bool truncated = false;   ///< the file holds bytes that are not complete events
+  bool truncated = false;  ///< the file holds bytes that are not complete events
   int64_t file_bytes = 0;
   int64_t event_bytes = 0;  ///< bytes the complete events take, headers included
 };

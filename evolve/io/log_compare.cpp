@@ -124,8 +124,8 @@ BusRecording compare_bus_recording(const LogContents& sent, const LogContents& r
         earlier = es[m].decoded && es[m].record->channel == y.record->channel && es[m].norm == y.norm;
       out.defect = "received event " + std::to_string(i) + " (event number " + std::to_string(y.record->eventnum) +
                    ", " + y.record->channel + ") " +
-                   (earlier ? "repeats or reorders an earlier sent event" : "equals no event that was sent after " +
-                                                                               std::to_string(j) + " events");
+                   (earlier ? "repeats or reorders an earlier sent event"
+                            : "equals no event that was sent after " + std::to_string(j) + " events");
       return out;
     }
     out.missing += k - j;

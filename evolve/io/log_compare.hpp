@@ -25,8 +25,8 @@ namespace robozoo {
 /// Normalises one robozoo message: decodes it safely, zeroes the clock fields,
 /// re-encodes it. Returns false for a channel robozoo does not own or bytes
 /// that are not exactly one message of that channel's type (`why` says which).
-bool normalize_message(const std::string& channel, const std::vector<uint8_t>& data,
-                       std::vector<uint8_t>& out, std::string* why = nullptr);
+bool normalize_message(const std::string& channel, const std::vector<uint8_t>& data, std::vector<uint8_t>& out,
+                       std::string* why = nullptr);
 
 /// True for the channels normalize_message knows (ROBOZOO_RUN, _GENERATION,
 /// _GENOME, _MORPHOLOGY, _POSE).

@@ -76,6 +76,8 @@ constexpr double kRoundShift = 0x1.8p52;
 inline uint64_t int_from_shifted(double k_plus_shift) { return bits_of(k_plus_shift) - bits_of(kRoundShift); }
 
 /// 2^k as a double for an integer-valued k in [-1022, 1023], from k + kRoundShift.
-inline double pow2_from_shifted(double k_plus_shift) { return from_bits((int_from_shifted(k_plus_shift) + 1023) << 52); }
+inline double pow2_from_shifted(double k_plus_shift) {
+  return from_bits((int_from_shifted(k_plus_shift) + 1023) << 52);
+}
 
 }  // namespace robozoo::math

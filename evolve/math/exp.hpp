@@ -23,7 +23,7 @@ namespace robozoo::math {
 namespace exp_detail {
 
 constexpr double kInvLn2 = 0x1.71547652b82fep+0;
-constexpr double kLn2Hi = 0x1.62e42fefa3800p-1;  // 42 significant bits
+constexpr double kLn2Hi = 0x1.62e42fefa3800p-1;   // 42 significant bits
 constexpr double kLn2Lo = 0x1.ef35793c76730p-45;  // ln2 - kLn2Hi, rounded
 // Arguments are clamped to this range before reduction (|k| <= 1443, so both
 // halves of 2^k are normal numbers); outside it exp has long overflowed or
@@ -33,18 +33,18 @@ constexpr double kClamp = 1000.0;
 /// e^r - 1 for |r| <= 0.35: r + r^2 (1/2! + r/3! + ... + r^11/13!).
 inline double expm1_kernel(double r) {
   ROBOZOO_NO_FP_CONTRACT
-  const double p = 0x1.0000000000000p-1 +
-                   r * (0x1.5555555555555p-3 +
-                   r * (0x1.5555555555555p-5 +
-                   r * (0x1.1111111111111p-7 +
-                   r * (0x1.6c16c16c16c17p-10 +
-                   r * (0x1.a01a01a01a01ap-13 +
-                   r * (0x1.a01a01a01a01ap-16 +
-                   r * (0x1.71de3a556c734p-19 +
-                   r * (0x1.27e4fb7789f5cp-22 +
-                   r * (0x1.ae64567f544e4p-26 +
-                   r * (0x1.1eed8eff8d898p-29 +
-                   r * 0x1.6124613a86d09p-33))))))))));
+  const double p =
+      0x1.0000000000000p-1 +
+      r * (0x1.5555555555555p-3 +
+           r * (0x1.5555555555555p-5 +
+                r * (0x1.1111111111111p-7 +
+                     r * (0x1.6c16c16c16c17p-10 +
+                          r * (0x1.a01a01a01a01ap-13 +
+                               r * (0x1.a01a01a01a01ap-16 +
+                                    r * (0x1.71de3a556c734p-19 +
+                                         r * (0x1.27e4fb7789f5cp-22 +
+                                              r * (0x1.ae64567f544e4p-26 +
+                                                   r * (0x1.1eed8eff8d898p-29 + r * 0x1.6124613a86d09p-33))))))))));
   return r + (r * r) * p;
 }
 

@@ -23,10 +23,10 @@ namespace robozoo::math {
 namespace trig_detail {
 
 constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
-constexpr double kPio2_1 = 0x1.921fb54400000p+0;   // 33 significant bits
-constexpr double kPio2_2 = 0x1.0b4611a600000p-34;  // 33
-constexpr double kPio2_3 = 0x1.3198a2e000000p-69;  // 33
-constexpr double kPio2_4 = 0x1.b839a252049c1p-104; // the rest, rounded
+constexpr double kPio2_1 = 0x1.921fb54400000p+0;    // 33 significant bits
+constexpr double kPio2_2 = 0x1.0b4611a600000p-34;   // 33
+constexpr double kPio2_3 = 0x1.3198a2e000000p-69;   // 33
+constexpr double kPio2_4 = 0x1.b839a252049c1p-104;  // the rest, rounded
 /// Largest |x| the reduction handles exactly (|k| <= 667544 < 2^20).
 constexpr double kMaxArgument = 0x1p20;
 
@@ -61,14 +61,13 @@ inline Reduced reduce(double x) {
 inline double sin_kernel(double hi, double lo) {
   ROBOZOO_NO_FP_CONTRACT
   const double z = hi * hi;
-  const double s = -0x1.5555555555555p-3 +
-                   z * (0x1.1111111111111p-7 +
-                   z * (-0x1.a01a01a01a01ap-13 +
-                   z * (0x1.71de3a556c734p-19 +
-                   z * (-0x1.ae64567f544e4p-26 +
-                   z * (0x1.6124613a86d09p-33 +
-                   z * (-0x1.ae7f3e733b81fp-41 +
-                   z * 0x1.952c77030ad4ap-49))))));
+  const double s =
+      -0x1.5555555555555p-3 +
+      z * (0x1.1111111111111p-7 +
+           z * (-0x1.a01a01a01a01ap-13 +
+                z * (0x1.71de3a556c734p-19 +
+                     z * (-0x1.ae64567f544e4p-26 +
+                          z * (0x1.6124613a86d09p-33 + z * (-0x1.ae7f3e733b81fp-41 + z * 0x1.952c77030ad4ap-49))))));
   // sin(hi + lo) = sin(hi) + lo cos(hi), cos(hi) ~ 1 - z/2.
   return hi + ((z * hi) * s + lo * (1.0 - 0.5 * z));
 }
@@ -77,13 +76,12 @@ inline double sin_kernel(double hi, double lo) {
 inline double cos_kernel(double hi, double lo) {
   ROBOZOO_NO_FP_CONTRACT
   const double z = hi * hi;
-  const double c = 0x1.5555555555555p-5 +
-                   z * (-0x1.6c16c16c16c17p-10 +
-                   z * (0x1.a01a01a01a01ap-16 +
-                   z * (-0x1.27e4fb7789f5cp-22 +
-                   z * (0x1.1eed8eff8d898p-29 +
-                   z * (-0x1.93974a8c07c9dp-37 +
-                   z * 0x1.ae7f3e733b81fp-45)))));
+  const double c =
+      0x1.5555555555555p-5 +
+      z * (-0x1.6c16c16c16c17p-10 +
+           z * (0x1.a01a01a01a01ap-16 +
+                z * (-0x1.27e4fb7789f5cp-22 +
+                     z * (0x1.1eed8eff8d898p-29 + z * (-0x1.93974a8c07c9dp-37 + z * 0x1.ae7f3e733b81fp-45)))));
   // 1 - z/2 + z^2 c - lo sin(hi), with the rounding error of w = 1 - z/2 added back.
   const double hz = 0.5 * z;
   const double w = 1.0 - hz;

@@ -47,8 +47,8 @@ generation_t make_generation_message(const std::string& run_id, const Generation
   return m;
 }
 
-cppn_genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g,
-                             int32_t species_id, const GenomeScore& score, int64_t utime) {
+cppn_genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g, int32_t species_id,
+                                  const GenomeScore& score, int64_t utime) {
   cppn_genome_t m{};
   m.utime = utime;
   m.run_id = run_id;
@@ -130,8 +130,8 @@ morphology_t make_morphology_message(const std::string& run_id, int32_t generati
   return m;
 }
 
-pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t genome_id,
-                         const SimState& s, int64_t utime) {
+pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t genome_id, const SimState& s,
+                         int64_t utime) {
   pose_t m{};
   m.utime = utime;
   m.run_id = run_id;
@@ -158,8 +158,7 @@ pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t 
 Genome genome_from_message(const cppn_genome_t& m, const GenomeLayout& layout) {
   if (m.num_nodes < 0 || static_cast<size_t>(m.num_nodes) != m.nodes.size() || m.num_links < 0 ||
       static_cast<size_t>(m.num_links) != m.links.size())
-    throw std::invalid_argument("genome message " + std::to_string(m.genome_id) +
-                                ": counts do not match its arrays");
+    throw std::invalid_argument("genome message " + std::to_string(m.genome_id) + ": counts do not match its arrays");
   Genome g;
   g.id = m.genome_id;
   for (const auto& n : m.nodes) {
@@ -171,8 +170,7 @@ Genome genome_from_message(const cppn_genome_t& m, const GenomeLayout& layout) {
                                   " has unknown activation " + std::to_string(n.activation));
     g.nodes.push_back({n.id, static_cast<NodeKind>(n.kind), static_cast<Activation>(n.activation), n.position});
   }
-  for (const auto& l : m.links)
-    g.links.push_back({l.innovation, l.from_node, l.to_node, l.weight, l.enabled != 0, 0});
+  for (const auto& l : m.links) g.links.push_back({l.innovation, l.from_node, l.to_node, l.weight, l.enabled != 0, 0});
   validate_genome(g, layout);
   return g;
 }

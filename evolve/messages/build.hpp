@@ -35,7 +35,7 @@ run_t make_run_message(const std::string& run_id, const RunConfig& config, int64
 /// Everything a generation_t reports, computed by the evolution loop.
 struct GenerationSummary {
   int32_t generation = 0;
-  int64_t evaluations = 0;       ///< cumulative (count)
+  int64_t evaluations = 0;  ///< cumulative (count)
   double best_fitness = 0, mean_fitness = 0, stderr_fitness = 0, best_so_far_fitness = 0;
   int64_t champion_id = -1;
   int32_t num_species = 0;
@@ -50,12 +50,12 @@ struct GenomeScore {
   double fitness = 0, r = 0, d = 0;
   Outcome outcome = Outcome::NotSimulated;
 };
-cppn_genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g,
-                             int32_t species_id, const GenomeScore& score, int64_t utime);
+cppn_genome_t make_genome_message(const std::string& run_id, int32_t generation, const Genome& g, int32_t species_id,
+                                  const GenomeScore& score, int64_t utime);
 morphology_t make_morphology_message(const std::string& run_id, int32_t generation, int64_t genome_id,
                                      const Robot& robot, int64_t utime);
-pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t genome_id,
-                         const SimState& state, int64_t utime);
+pose_t make_pose_message(const std::string& run_id, int32_t generation, int64_t genome_id, const SimState& state,
+                         int64_t utime);
 
 /// Inverse of make_genome_message: checks counts and the genome against the
 /// layout; throws std::invalid_argument naming the problem.

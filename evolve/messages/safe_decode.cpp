@@ -8,8 +8,8 @@ namespace robozoo {
 namespace {
 
 // Sizes on the wire (LCM: big-endian, nested structs without their hash).
-constexpr int64_t kNodeBytes = 4 + 1 + 1 + 8;                              // cppn_node_t
-constexpr int64_t kLinkBytes = 8 + 4 + 4 + 8 + 1;                          // link_t
+constexpr int64_t kNodeBytes = 4 + 1 + 1 + 8;                                  // cppn_node_t
+constexpr int64_t kLinkBytes = 8 + 4 + 4 + 8 + 1;                              // link_t
 constexpr int64_t kSphereBytes = 4 + 4 + 24 + 8 + 8 + 4 + 1 + 24 + 8 + 4 + 1;  // sphere_t
 
 class Walker {
@@ -116,8 +116,9 @@ int64_t wire_size(const cppn_genome_t*, const uint8_t* data, size_t len, std::st
     for (int i = 0; i < 8; ++i) h = (h << 8) | data[i];
     if (static_cast<int64_t>(h) == fingerprint<genome_t>()) {
       if (why)
-        *why = "a genome_t of an older robozoo (its nodes have no drawing positions, written before the "
-               "HyperNEAT topology rules); this robozoo reads cppn_genome_t: run the evolution again";
+        *why =
+            "a genome_t of an older robozoo (its nodes have no drawing positions, written before the "
+            "HyperNEAT topology rules); this robozoo reads cppn_genome_t: run the evolution again";
       return -1;
     }
   }
@@ -147,9 +148,8 @@ int64_t wire_size(const morphology_t*, const uint8_t* data, size_t len, std::str
 int64_t wire_size(const pose_t*, const uint8_t* data, size_t len, std::string* why) {
   Walker w(data, len, why);
   int32_t bodies = 0, spheres = 0, neurons = 0, sensors = 0;
-  if (w.hash(fingerprint<pose_t>()) && w.skip(8, "utime") && w.str("run_id") &&
-      w.skip(4 + 8 + 4 + 8, "pose fields") && w.count(bodies, "num_bodies") &&
-      w.array(bodies, 24, "body_position") && w.array(bodies, 32, "body_quaternion") &&
+  if (w.hash(fingerprint<pose_t>()) && w.skip(8, "utime") && w.str("run_id") && w.skip(4 + 8 + 4 + 8, "pose fields") &&
+      w.count(bodies, "num_bodies") && w.array(bodies, 24, "body_position") && w.array(bodies, 32, "body_quaternion") &&
       w.count(spheres, "num_spheres") && w.array(spheres, 24, "sphere_center") && w.count(neurons, "num_neurons") &&
       w.array(neurons, 8, "neuron_output") && w.count(sensors, "num_sensors") && w.array(sensors, 8, "sensor_value"))
     return w.end();

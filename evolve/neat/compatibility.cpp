@@ -34,8 +34,7 @@ double compatibility_distance(const Genome& a, const Genome& b, const NeatParams
   }
   const double n = 1.0;  // N = 1 (HyperNEAT): no normalisation by genome size
   const double wbar = matching > 0 ? weight_diff / matching : 0.0;
-  return p.disjoint_coefficient * disjoint / n + p.excess_coefficient * excess / n +
-         p.weight_coefficient * wbar;
+  return p.disjoint_coefficient * disjoint / n + p.excess_coefficient * excess / n + p.weight_coefficient * wbar;
 }
 
 }  // namespace robozoo

@@ -13,8 +13,8 @@ constexpr double kZeroFitness = 0.0001;
 // CrossoverGenes::Both and ::Drawn: genes from both parents, parent a drawn with probability
 // fitness_a / (fitness_a + fitness_b); the child's nodes are the inputs and outputs and every
 // hidden node one of its links touches (a's copy where both parents have it).
-Genome crossover_both_parents(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
-                              const NeatParams& p, bool average_weights, Rng& rng) {
+Genome crossover_both_parents(const Genome& a, double fitness_a, const Genome& b, double fitness_b, const NeatParams& p,
+                              bool average_weights, Rng& rng) {
   const double fa = fitness_a == 0.0 ? kZeroFitness : fitness_a;
   const double fb = fitness_b == 0.0 ? kZeroFitness : fitness_b;
   const double share_a = fa / (fa + fb);
@@ -87,13 +87,12 @@ Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitn
   return crossover(a, fitness_a, b, fitness_b, p, rng);
 }
 
-Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
-                 const NeatParams& p, Rng& rng) {
+Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, const NeatParams& p, Rng& rng) {
   return crossover(a, fitness_a, b, fitness_b, p, false, rng);
 }
 
-Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
-                 const NeatParams& p, bool average_weights, Rng& rng) {
+Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, const NeatParams& p,
+                 bool average_weights, Rng& rng) {
   if (p.crossover_genes != CrossoverGenes::Fitter)
     return crossover_both_parents(a, fitness_a, b, fitness_b, p, average_weights, rng);
   const double q = p.disabled_gene_probability;
@@ -124,8 +123,8 @@ Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitn
     // Invariant: an innovation number names one from -> to pair in every genome.
     if (g.from != l.from || g.to != l.to)
       throw std::logic_error("crossover: innovation " + std::to_string(l.innovation) +
-                             " joins different nodes in genomes " + std::to_string(a.id) +
-                             " and " + std::to_string(b.id));
+                             " joins different nodes in genomes " + std::to_string(a.id) + " and " +
+                             std::to_string(b.id));
     const bool disabled_in_either = !g.enabled || !l.enabled;
     LinkGene gene;
     if (average_weights) {

@@ -21,8 +21,7 @@ namespace robozoo {
 /// parent, in innovation order: a matching gene comes from the drawn parent, a gene only one parent
 /// has is kept when that parent is drawn. There a fitness of 0 counts as 0.0001, and the child's
 /// nodes are the inputs and outputs and every hidden node its links touch (a's copy first).
-Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
-                 const NeatParams& p, Rng& rng);
+Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, const NeatParams& p, Rng& rng);
 /// The same, and with `average_weights` (Stanley's mate_multipoint_avg) every matching gene is
 /// the fitter parent's gene with the mean of both parents' weights, enabled (no parent draw).
 /// With p.crossover_rule == CrossoverRule::Stanley: on equal fitness the parent with fewer link
@@ -30,8 +29,8 @@ Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitn
 /// flags; a matching gene disabled in either parent is inherited disabled with
 /// p.disabled_gene_probability (one draw per such gene), else it keeps the chosen gene's flag
 /// (copied) or is enabled (averaged).
-Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b,
-                 const NeatParams& p, bool average_weights, Rng& rng);
+Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, const NeatParams& p,
+                 bool average_weights, Rng& rng);
 /// The same with disabled_gene_probability 0 and CrossoverGenes::Fitter.
 Genome crossover(const Genome& a, double fitness_a, const Genome& b, double fitness_b, Rng& rng);
 

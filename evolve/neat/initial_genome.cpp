@@ -13,8 +13,7 @@ int64_t first_free_innovation(const GenomeLayout& layout) {
   return static_cast<int64_t>(layout.num_inputs + layout.num_outputs) * layout.num_outputs;
 }
 
-bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime regime,
-                               const NeatParams& p) {
+bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime regime, const NeatParams& p) {
   if (to.kind == NodeKind::Input || to.kind == NodeKind::Bias) return false;
   if (from.id == to.id) return regime == Regime::Recurrent && p.self_loops;
   if (regime == Regime::Recurrent) return true;
@@ -24,22 +23,20 @@ bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime 
 Genome initial_genome(const GenomeLayout& layout, int64_t id, const NeatParams& p, Regime regime, Rng& rng) {
   if (layout.num_inputs < 1 || layout.num_outputs < 1)
     throw std::invalid_argument("genome layout needs at least one input and one output, got " +
-                                std::to_string(layout.num_inputs) + " and " +
-                                std::to_string(layout.num_outputs));
+                                std::to_string(layout.num_inputs) + " and " + std::to_string(layout.num_outputs));
   if (layout.bias_input >= layout.num_inputs || layout.bias_input < -1)
-    throw std::invalid_argument("genome layout: bias input " + std::to_string(layout.bias_input) +
-                                " is not an input");
+    throw std::invalid_argument("genome layout: bias input " + std::to_string(layout.bias_input) + " is not an input");
   Genome g;
   g.id = id;
   for (int i = 0; i < layout.num_inputs; ++i)
-    g.nodes.push_back({i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear,
-                       kInputPosition});
+    g.nodes.push_back(
+        {i, i == layout.bias_input ? NodeKind::Bias : NodeKind::Input, Activation::Linear, kInputPosition});
   for (int o = 0; o < layout.num_outputs; ++o)
     g.nodes.push_back({layout.num_inputs + o, NodeKind::Output, layout.output_activation, kOutputPosition});
   const double r = p.initial_weight_range;
   const bool zero_recurrent = p.initial_links == InitialLinks::AllAllowedRecurrentZero;
-  const int sources = p.initial_links == InitialLinks::InputsToOutputs ? layout.num_inputs
-                                                                      : layout.num_inputs + layout.num_outputs;
+  const int sources =
+      p.initial_links == InitialLinks::InputsToOutputs ? layout.num_inputs : layout.num_inputs + layout.num_outputs;
   for (int from = 0; from < sources; ++from)
     for (int o = 0; o < layout.num_outputs; ++o) {
       const NodeGene& a = g.nodes[static_cast<size_t>(from)];

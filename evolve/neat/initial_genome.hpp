@@ -20,8 +20,7 @@ int64_t first_free_innovation(const GenomeLayout& layout);
 /// the nodes' drawing positions and the self-loop setting alone (no test of
 /// existing links; the cycle test of LinkRule::CycleTest is mutate_add_link's).
 /// Never a link into an input.
-bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime regime,
-                               const NeatParams& p);
+bool link_allowed_by_positions(const NodeGene& from, const NodeGene& to, Regime regime, const NeatParams& p);
 
 /// A generation-0 genome: the inputs (Linear, position 0), the outputs
 /// (layout.output_activation, position 1), no hidden node, and its links, born

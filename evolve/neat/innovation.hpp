@@ -29,8 +29,7 @@ class InnovationTracker {
   };
   /// `from`/`to` are the split link's endpoints: the new links from -> node and
   /// node -> to are also registered as link innovations of this generation.
-  Split split(int64_t link_innovation, int32_t from, int32_t to,
-              Activation activation = Activation::SignedSigmoid);
+  Split split(int64_t link_innovation, int32_t from, int32_t to, Activation activation = Activation::SignedSigmoid);
   /// Forget this generation's mutations (numbers keep increasing).
   void new_generation();
   int64_t next_innovation() const { return next_innovation_; }

@@ -14,8 +14,8 @@ namespace {
 
 // Index of node `id` in g.nodes (sorted by id), or -1.
 int node_index(const Genome& g, int32_t id) {
-  const auto it = std::lower_bound(g.nodes.begin(), g.nodes.end(), id,
-                                   [](const NodeGene& n, int32_t v) { return n.id < v; });
+  const auto it =
+      std::lower_bound(g.nodes.begin(), g.nodes.end(), id, [](const NodeGene& n, int32_t v) { return n.id < v; });
   return it != g.nodes.end() && it->id == id ? static_cast<int>(it - g.nodes.begin()) : -1;
 }
 
@@ -41,7 +41,8 @@ bool reaches(const Genome& g, int32_t src, int32_t dst) {
     out[static_cast<size_t>(a)].push_back(b);
   }
   const int s = node_index(g, src), d = node_index(g, dst);
-  if (s < 0 || d < 0) throw std::logic_error("genome " + std::to_string(g.id) + ": no node " + std::to_string(s < 0 ? src : dst));
+  if (s < 0 || d < 0)
+    throw std::logic_error("genome " + std::to_string(g.id) + ": no node " + std::to_string(s < 0 ? src : dst));
   std::vector<char> seen(n, 0);
   std::vector<int> stack{s};
   seen[static_cast<size_t>(s)] = 1;
@@ -65,8 +66,8 @@ void insert_link(Genome& g, const LinkGene& l) {
 }
 
 void insert_node(Genome& g, const NodeGene& n) {
-  const auto it = std::lower_bound(g.nodes.begin(), g.nodes.end(), n.id,
-                                   [](const NodeGene& x, int32_t v) { return x.id < v; });
+  const auto it =
+      std::lower_bound(g.nodes.begin(), g.nodes.end(), n.id, [](const NodeGene& x, int32_t v) { return x.id < v; });
   g.nodes.insert(it, n);
 }
 
@@ -76,8 +77,7 @@ std::vector<Activation> allowed_activations(uint32_t mask) {
     if (mask & (1u << c)) v.push_back(static_cast<Activation>(c));
   if (v.empty())
     throw std::invalid_argument("neat.hidden_activations: the mask " + std::to_string(mask) +
-                                " names no activation function (bits 0.." +
-                                std::to_string(kNumActivations - 1) + ")");
+                                " names no activation function (bits 0.." + std::to_string(kNumActivations - 1) + ")");
   return v;
 }
 
@@ -89,8 +89,7 @@ NodeKind node_kind_of(const Genome& g, int32_t id) {
 
 }  // namespace
 
-bool link_allowed(const Genome& g, const NodeGene& from, const NodeGene& to, Regime regime,
-                  const NeatParams& p) {
+bool link_allowed(const Genome& g, const NodeGene& from, const NodeGene& to, Regime regime, const NeatParams& p) {
   if (regime == Regime::FeedForward && p.link_rule == LinkRule::CycleTest) {
     if (to.kind == NodeKind::Input || to.kind == NodeKind::Bias || from.id == to.id) return false;
     return !reaches(g, to.id, from.id);
@@ -117,8 +116,7 @@ bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const
     // Candidate targets: every node that is not an input.
     std::vector<size_t> targets;
     for (size_t i = 0; i < g.nodes.size(); ++i)
-      if (g.nodes[i].id >= layout.num_inputs && g.nodes[i].kind != NodeKind::Input &&
-          g.nodes[i].kind != NodeKind::Bias)
+      if (g.nodes[i].id >= layout.num_inputs && g.nodes[i].kind != NodeKind::Input && g.nodes[i].kind != NodeKind::Bias)
         targets.push_back(i);
     if (targets.empty()) return false;
     for (int t = 0; t < p.add_link_tries && from < 0; ++t) {
@@ -138,14 +136,13 @@ bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const
   l.enabled = true;
   l.born = generation;
   if (has_innovation(g, l.innovation))
-    throw std::logic_error("mutate_add_link: innovation " + std::to_string(l.innovation) +
-                           " already in genome " + std::to_string(g.id));
+    throw std::logic_error("mutate_add_link: innovation " + std::to_string(l.innovation) + " already in genome " +
+                           std::to_string(g.id));
   insert_link(g, l);
   return true;
 }
 
-bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
-                     int32_t generation, Rng& rng) {
+bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov, int32_t generation, Rng& rng) {
   const std::vector<Activation> acts = allowed_activations(p.hidden_activations);
   // Splittable links: enabled ones; with HyperNEAT's rule, forward ones only.
   std::vector<size_t> splittable;
@@ -163,8 +160,7 @@ bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
   const InnovationTracker::Split s = innov.split(old.innovation, old.from, old.to, drawn);
   // The same split twice in one genome (possible only if a link is split again
   // within the generation that split it): leave the genome alone.
-  if (node_index(g, s.node) >= 0 || has_innovation(g, s.in_link) || has_innovation(g, s.out_link))
-    return false;
+  if (node_index(g, s.node) >= 0 || has_innovation(g, s.in_link) || has_innovation(g, s.out_link)) return false;
   const double position = (node_position(g, old.from) + node_position(g, old.to)) / 2.0;
   double out_weight = old.weight;
   if (p.add_node == AddNodeRule::HyperNeat) {
@@ -226,8 +222,8 @@ void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng
   }
 }
 
-void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
-            InnovationTracker& innov, int32_t generation, Rng& rng) {
+void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p, InnovationTracker& innov,
+            int32_t generation, Rng& rng) {
   if (p.mutation_order == MutationOrder::Independent) {
     // HyperNEAT's testMutate: three independent draws; a failed structural mutation changes nothing.
     if (rng.bernoulli(p.add_node_probability)) mutate_add_node(g, p, innov, generation, rng);

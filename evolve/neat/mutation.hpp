@@ -16,8 +16,7 @@ namespace robozoo {
 /// directed cycle over all link genes, disabled ones included, with
 /// LinkRule::CycleTest (so no later re-enabling can close one either).
 /// Existing genes are not looked at otherwise.
-bool link_allowed(const Genome& g, const NodeGene& from, const NodeGene& to, Regime regime,
-                  const NeatParams& p);
+bool link_allowed(const Genome& g, const NodeGene& from, const NodeGene& to, Regime regime, const NeatParams& p);
 
 /// Adds one new link gene with weight uniform in [-initial_weight_range,
 /// initial_weight_range), born in `generation`, between two nodes that have no
@@ -41,8 +40,7 @@ bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const
 /// disabled, h -> b gets w. New links are born in `generation`. Returns false
 /// if no link can be split, or if g already has the node this split would
 /// create. Throws std::invalid_argument if p.hidden_activations names no valid activation.
-bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov,
-                     int32_t generation, Rng& rng);
+bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov, int32_t generation, Rng& rng);
 
 /// Stanley's weight mutation: the probability that one call is "severe".
 inline constexpr double kStanleySevereProbability = 0.5;
@@ -71,7 +69,7 @@ void mutate_weights(Genome& g, const NeatParams& p, int32_t generation, Rng& rng
 /// with p.mutate_weights_probability mutate the weights. With
 /// p.structural_draw_decides (Stanley), an add-node or add-link whose draw
 /// succeeded ends the mutation even when it found nothing to add.
-void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
-            InnovationTracker& innov, int32_t generation, Rng& rng);
+void mutate(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p, InnovationTracker& innov,
+            int32_t generation, Rng& rng);
 
 }  // namespace robozoo

@@ -6,8 +6,7 @@ namespace robozoo {
 namespace {
 
 template <class E>
-E from_name(const std::string& s, std::initializer_list<E> all, std::string (*name)(E),
-            const char* what) {
+E from_name(const std::string& s, std::initializer_list<E> all, std::string (*name)(E), const char* what) {
   std::string names;
   for (E e : all) {
     if (name(e) == s) return e;
@@ -69,9 +68,7 @@ std::string crossover_genes_name(CrossoverGenes r) {
 std::string mutation_order_name(MutationOrder r) {
   return r == MutationOrder::OneStructural ? "one_structural" : "independent";
 }
-std::string representative_name(Representative r) {
-  return r == Representative::Champion ? "champion" : "best_ever";
-}
+std::string representative_name(Representative r) { return r == Representative::Champion ? "champion" : "best_ever"; }
 std::string threshold_rule_name(ThresholdRule r) { return r == ThresholdRule::Clamp ? "clamp" : "hyperneat"; }
 std::string neat_mechanics_name(NeatMechanics m) { return m == NeatMechanics::HyperNeat ? "hyperneat" : "robozoo"; }
 
@@ -117,8 +114,7 @@ MutationOrder mutation_order_from_name(const std::string& s) {
                    "mutation order");
 }
 Representative representative_from_name(const std::string& s) {
-  return from_name(s, {Representative::Champion, Representative::BestEver}, representative_name,
-                   "representative");
+  return from_name(s, {Representative::Champion, Representative::BestEver}, representative_name, "representative");
 }
 ThresholdRule threshold_rule_from_name(const std::string& s) {
   return from_name(s, {ThresholdRule::Clamp, ThresholdRule::HyperNeat}, threshold_rule_name, "threshold rule");
@@ -144,9 +140,8 @@ std::string neat_mechanics_of(const NeatParams& p) {
     NeatParams q = p;
     apply_neat_mechanics(q, m);
     if (q.crossover_genes == p.crossover_genes && q.mutation_order == p.mutation_order &&
-        q.representative == p.representative && q.threshold_rule == p.threshold_rule &&
-        q.stagnation == p.stagnation && q.offspring_rounding == p.offspring_rounding &&
-        q.childless_species_stay == p.childless_species_stay &&
+        q.representative == p.representative && q.threshold_rule == p.threshold_rule && q.stagnation == p.stagnation &&
+        q.offspring_rounding == p.offspring_rounding && q.childless_species_stay == p.childless_species_stay &&
         q.interspecies_mating_probability == p.interspecies_mating_probability)
       return neat_mechanics_name(m);
   }

@@ -38,7 +38,8 @@ enum class AddNodeRule : int8_t {
 /// Which link weights a weight mutation changes.
 enum class WeightMutationRule : int8_t {
   HyperNeat = 0,  ///< links younger than young_link_age always perturbed, older ones with old_link_perturb_probability
-  Classic = 1,    ///< the NEAT paper: every link; replaced by a new random value with weight_replace_probability, else perturbed
+  Classic =
+      1,  ///< the NEAT paper: every link; replaced by a new random value with weight_replace_probability, else perturbed
   /// Stanley's NEAT C++ (mutate_link_weights, rate 1): one call in two is "severe" (each link
   /// 70 % perturbed, 20 % replaced, 10 % kept); otherwise, in a genome of at least 10 link genes,
   /// the links past 80 % of the list (the newest) 50 % perturbed, 20 % replaced, 30 % kept, and
@@ -140,20 +141,20 @@ enum class CompatibilityRule : int8_t {
   Classic = 1,    ///< excess = genes beyond the other genome's last innovation; disjoint = the others
 };
 
-std::string link_rule_name(LinkRule r);                  ///< "positions" / "cycle_test"
+std::string link_rule_name(LinkRule r);          ///< "positions" / "cycle_test"
 std::string initial_links_name(InitialLinks r);  ///< "all_allowed" / "inputs_to_outputs" / "all_allowed_recurrent_zero"
-std::string add_link_rule_name(AddLinkRule r);           ///< "uniform" / "tries"
-std::string add_node_rule_name(AddNodeRule r);           ///< "hyperneat" / "classic"
-std::string compatibility_rule_name(CompatibilityRule r);///< "hyperneat" / "classic"
+std::string add_link_rule_name(AddLinkRule r);   ///< "uniform" / "tries"
+std::string add_node_rule_name(AddNodeRule r);   ///< "hyperneat" / "classic"
+std::string compatibility_rule_name(CompatibilityRule r);     ///< "hyperneat" / "classic"
 std::string weight_mutation_rule_name(WeightMutationRule r);  ///< "hyperneat" / "classic" / "stanley"
-std::string crossover_rule_name(CrossoverRule r);        ///< "robozoo" / "stanley"
-std::string stagnation_rule_name(StagnationRule r);      ///< "robozoo" / "stanley" / "hyperneat"
-std::string offspring_rounding_name(OffspringRounding r);///< "largest_remainder" / "skim" / "best_first"
-std::string crossover_genes_name(CrossoverGenes r);      ///< "fitter" / "both" / "drawn"
-std::string mutation_order_name(MutationOrder r);        ///< "one_structural" / "independent"
-std::string representative_name(Representative r);      ///< "champion" / "best_ever"
-std::string threshold_rule_name(ThresholdRule r);        ///< "clamp" / "hyperneat"
-std::string neat_mechanics_name(NeatMechanics m);        ///< "hyperneat" / "robozoo"
+std::string crossover_rule_name(CrossoverRule r);             ///< "robozoo" / "stanley"
+std::string stagnation_rule_name(StagnationRule r);           ///< "robozoo" / "stanley" / "hyperneat"
+std::string offspring_rounding_name(OffspringRounding r);     ///< "largest_remainder" / "skim" / "best_first"
+std::string crossover_genes_name(CrossoverGenes r);           ///< "fitter" / "both" / "drawn"
+std::string mutation_order_name(MutationOrder r);             ///< "one_structural" / "independent"
+std::string representative_name(Representative r);            ///< "champion" / "best_ever"
+std::string threshold_rule_name(ThresholdRule r);             ///< "clamp" / "hyperneat"
+std::string neat_mechanics_name(NeatMechanics m);             ///< "hyperneat" / "robozoo"
 /// Inverses of the *_name functions; throw std::invalid_argument listing the names.
 LinkRule link_rule_from_name(const std::string& s);
 InitialLinks initial_links_from_name(const std::string& s);
@@ -171,38 +172,38 @@ ThresholdRule threshold_rule_from_name(const std::string& s);
 NeatMechanics neat_mechanics_from_name(const std::string& s);
 
 struct NeatParams {
-  int population = 150;                  ///< genomes per generation (count)
+  int population = 150;  ///< genomes per generation (count)
   // Compatibility distance: c_d * D / N + c_e * E / N + c_w * Wbar, with N = 1.
-  double disjoint_coefficient = 2.0;     ///< c_d (distance units per gene)
-  double excess_coefficient = 2.0;       ///< c_e (distance units per gene)
-  double weight_coefficient = 1.0;       ///< c_w (distance units per unit of weight difference)
-  double compatibility_threshold = 6.0;  ///< initial threshold (distance units)
-  double compatibility_modifier = 0.3;   ///< threshold step per generation (distance units)
-  double min_compatibility_threshold = 0.3;  ///< the threshold never goes below this (distance units)
-  int target_species = 8;                ///< threshold moves towards this many species (count)
-  double survival_threshold = 0.2;       ///< fraction of each species allowed to reproduce
-  int dropoff_age = 15;                  ///< generations without improvement before penalty
-  double dropoff_factor = 0.001;         ///< fitness multiplier of a stagnant species
-  double add_node_probability = 0.03;    ///< per offspring
-  double add_link_probability = 0.05;    ///< per offspring
-  double mutate_weights_probability = 0.8;  ///< per offspring
-  int young_link_age = 18;               ///< links younger than this (generations) are always perturbed
+  double disjoint_coefficient = 2.0;          ///< c_d (distance units per gene)
+  double excess_coefficient = 2.0;            ///< c_e (distance units per gene)
+  double weight_coefficient = 1.0;            ///< c_w (distance units per unit of weight difference)
+  double compatibility_threshold = 6.0;       ///< initial threshold (distance units)
+  double compatibility_modifier = 0.3;        ///< threshold step per generation (distance units)
+  double min_compatibility_threshold = 0.3;   ///< the threshold never goes below this (distance units)
+  int target_species = 8;                     ///< threshold moves towards this many species (count)
+  double survival_threshold = 0.2;            ///< fraction of each species allowed to reproduce
+  int dropoff_age = 15;                       ///< generations without improvement before penalty
+  double dropoff_factor = 0.001;              ///< fitness multiplier of a stagnant species
+  double add_node_probability = 0.03;         ///< per offspring
+  double add_link_probability = 0.05;         ///< per offspring
+  double mutate_weights_probability = 0.8;    ///< per offspring
+  int young_link_age = 18;                    ///< links younger than this (generations) are always perturbed
   double old_link_perturb_probability = 0.1;  ///< per older link, when weights mutate
-  double weight_perturbation = 2.5;      ///< perturbation uniform in [-x, x] (weight units)
-  double weight_limit = 5.0;             ///< weights clamped to [-x, x] (weight units)
-  double initial_weight_range = 3.0;     ///< initial weights uniform in [-x, x] (weight units)
-  double mutate_only_probability = 0.25; ///< offspring made by mutation alone (no crossover)
+  double weight_perturbation = 2.5;           ///< perturbation uniform in [-x, x] (weight units)
+  double weight_limit = 5.0;                  ///< weights clamped to [-x, x] (weight units)
+  double initial_weight_range = 3.0;          ///< initial weights uniform in [-x, x] (weight units)
+  double mutate_only_probability = 0.25;      ///< offspring made by mutation alone (no crossover)
   /// Crossover partner from another species (probability; HyperNEAT has no interspecies mating: 0;
   /// robozoo's mechanics 0.001, the NEAT paper's value).
   double interspecies_mating_probability = 0.0;
-  int species_elitism_min_offspring = 5; ///< a species with at least this many offspring keeps its champion
-  int add_link_tries = 20;               ///< attempts to find a new, legal link with add_link "tries" (count)
-  LinkRule link_rule = LinkRule::Positions;          ///< which links the feed-forward regime allows
-  bool self_loops = false;               ///< recurrent regime: links from a node to itself allowed
-  InitialLinks initial_links = InitialLinks::AllAllowed;  ///< generation-0 topology
-  AddLinkRule add_link = AddLinkRule::Uniform;       ///< how add-link chooses
-  AddNodeRule add_node = AddNodeRule::HyperNeat;     ///< how add-node splits
-  CompatibilityRule compatibility = CompatibilityRule::HyperNeat;  ///< how unmatched genes count
+  int species_elitism_min_offspring = 5;     ///< a species with at least this many offspring keeps its champion
+  int add_link_tries = 20;                   ///< attempts to find a new, legal link with add_link "tries" (count)
+  LinkRule link_rule = LinkRule::Positions;  ///< which links the feed-forward regime allows
+  bool self_loops = false;                   ///< recurrent regime: links from a node to itself allowed
+  InitialLinks initial_links = InitialLinks::AllAllowed;               ///< generation-0 topology
+  AddLinkRule add_link = AddLinkRule::Uniform;                         ///< how add-link chooses
+  AddNodeRule add_node = AddNodeRule::HyperNeat;                       ///< how add-node splits
+  CompatibilityRule compatibility = CompatibilityRule::HyperNeat;      ///< how unmatched genes count
   WeightMutationRule weight_mutation = WeightMutationRule::HyperNeat;  ///< which weights a weight mutation changes
   /// Classic weight mutation: a link's weight is replaced by a new value uniform in
   /// [-initial_weight_range, initial_weight_range) with this probability, else perturbed.

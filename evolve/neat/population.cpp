@@ -62,9 +62,8 @@ void validate_neat_params(const NeatParams& p) {
         "must be >= 0, got " + std::to_string(p.population_stagnation_generations));
   const uint32_t valid_bits = (1u << kNumActivations) - 1u;
   if (p.hidden_activations == 0 || (p.hidden_activations & ~valid_bits) != 0)
-    bad("hidden_activations", "must be a non-empty mask of activation codes 0.." +
-                                  std::to_string(kNumActivations - 1) + ", got " +
-                                  std::to_string(p.hidden_activations));
+    bad("hidden_activations", "must be a non-empty mask of activation codes 0.." + std::to_string(kNumActivations - 1) +
+                                  ", got " + std::to_string(p.hidden_activations));
 }
 
 void validate_regime_params(Regime regime, const NeatParams& p) {
@@ -108,14 +107,11 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
   speciate_current();
 }
 
-Population::Population(const NeatParams& params, Regime regime, const GenomeLayout& layout,
-                       PopulationState state)
+Population::Population(const NeatParams& params, Regime regime, const GenomeLayout& layout, PopulationState state)
     : params_(params), regime_(regime), layout_(layout), s_(std::move(state)) {
   validate_neat_params(params_);
   validate_regime_params(regime_, params_);
-  auto fail = [](const std::string& what) {
-    throw std::invalid_argument("population state: " + what);
-  };
+  auto fail = [](const std::string& what) { throw std::invalid_argument("population state: " + what); };
   const size_t n = s_.genomes.size();
   if (static_cast<int>(n) != params_.population)
     fail("has " + std::to_string(n) + " genomes, the parameters say " + std::to_string(params_.population));
@@ -125,8 +121,7 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
     fail("compatibility threshold must be finite and > 0");
   if (!(s_.speciation_threshold > 0.0) || !std::isfinite(s_.speciation_threshold))
     fail("speciation threshold must be finite and > 0");
-  if (!(s_.record_fitness >= 0.0) || !std::isfinite(s_.record_fitness))
-    fail("record fitness must be finite and >= 0");
+  if (!(s_.record_fitness >= 0.0) || !std::isfinite(s_.record_fitness)) fail("record fitness must be finite and >= 0");
   if (s_.generations_since_record < 0) fail("generations since the record must be >= 0");
   int64_t max_innovation = -1, max_id = -1;
   int32_t max_node = layout_.first_hidden() - 1;
@@ -150,7 +145,8 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
     if (sp.members.empty()) fail("species " + std::to_string(sp.id) + " has no members");
     validate_genome(sp.representative, layout_);
     for (int m : sp.members) {
-      if (m < 0 || static_cast<size_t>(m) >= n) fail("species " + std::to_string(sp.id) + " has member index " + std::to_string(m) + " out of range");
+      if (m < 0 || static_cast<size_t>(m) >= n)
+        fail("species " + std::to_string(sp.id) + " has member index " + std::to_string(m) + " out of range");
       if (seen[static_cast<size_t>(m)]++) fail("genome index " + std::to_string(m) + " is in two species");
       if (s_.species_of[static_cast<size_t>(m)] != sp.id)
         fail("genome index " + std::to_string(m) + " is listed in species " + std::to_string(sp.id) +
@@ -163,8 +159,8 @@ Population::Population(const NeatParams& params, Regime regime, const GenomeLayo
 
 void Population::speciate_current() {
   s_.speciation_threshold = s_.compatibility_threshold;
-  s_.species_of = speciate(s_.genomes, s_.species, s_.compatibility_threshold, params_,
-                           s_.next_species_id, s_.generation);
+  s_.species_of =
+      speciate(s_.genomes, s_.species, s_.compatibility_threshold, params_, s_.next_species_id, s_.generation);
   s_.compatibility_threshold =
       adjust_threshold(s_.compatibility_threshold, static_cast<int>(s_.species.size()), params_);
 }
@@ -175,8 +171,8 @@ namespace {
 void check_fitness(const std::vector<Genome>& genomes, const std::vector<double>& fitness) {
   const size_t n = genomes.size();
   if (fitness.size() != n)
-    throw std::invalid_argument("Population::advance: " + std::to_string(fitness.size()) +
-                                " fitness values for " + std::to_string(n) + " genomes");
+    throw std::invalid_argument("Population::advance: " + std::to_string(fitness.size()) + " fitness values for " +
+                                std::to_string(n) + " genomes");
   for (size_t i = 0; i < n; ++i)
     if (!std::isfinite(fitness[i]) || fitness[i] < 0.0)
       throw std::invalid_argument("Population::advance: fitness of genome " + std::to_string(genomes[i].id) +
@@ -404,8 +400,7 @@ struct Breeding {
           if (pb >= pa) ++pb;
           b = static_cast<size_t>(sp.members[pb]);
         }
-        const bool average =
-            params.mate_average_probability > 0.0 && rng.bernoulli(params.mate_average_probability);
+        const bool average = params.mate_average_probability > 0.0 && rng.bernoulli(params.mate_average_probability);
         child = crossover(s.genomes[a], fitness[a], s.genomes[b], fitness[b], params, average, rng);
       }
       child.id = s.next_genome_id++;

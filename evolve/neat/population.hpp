@@ -85,25 +85,23 @@ struct PopulationState {
   double record_fitness = 0.0;
   int32_t generations_since_record = 0;
   bool operator==(const PopulationState& o) const {
-    return generation == o.generation && next_genome_id == o.next_genome_id &&
-           record_fitness == o.record_fitness && generations_since_record == o.generations_since_record &&
-           next_innovation == o.next_innovation && next_node_id == o.next_node_id &&
-           next_species_id == o.next_species_id &&
-           compatibility_threshold == o.compatibility_threshold &&
-           speciation_threshold == o.speciation_threshold && genomes == o.genomes &&
-           species_of == o.species_of && species == o.species;
+    return generation == o.generation && next_genome_id == o.next_genome_id && record_fitness == o.record_fitness &&
+           generations_since_record == o.generations_since_record && next_innovation == o.next_innovation &&
+           next_node_id == o.next_node_id && next_species_id == o.next_species_id &&
+           compatibility_threshold == o.compatibility_threshold && speciation_threshold == o.speciation_threshold &&
+           genomes == o.genomes && species_of == o.species_of && species == o.species;
   }
 };
 
 /// What advance() did with the generation it was given (for logs and tests).
 struct GenerationReport {
-  int32_t generation = 0;             ///< the generation that was evaluated
-  size_t champion = 0;                ///< index of the generation champion in it
-  double champion_fitness = 0.0;      ///< its raw fitness
-  std::vector<int32_t> species_ids;   ///< species, in order
-  std::vector<double> adjusted;       ///< each species' shared (and dropped-off) fitness
-  std::vector<int> offspring;         ///< offspring allocated to each species (sum = population)
-  std::vector<bool> stagnant;         ///< whether each species was stagnant
+  int32_t generation = 0;            ///< the generation that was evaluated
+  size_t champion = 0;               ///< index of the generation champion in it
+  double champion_fitness = 0.0;     ///< its raw fitness
+  std::vector<int32_t> species_ids;  ///< species, in order
+  std::vector<double> adjusted;      ///< each species' shared (and dropped-off) fitness
+  std::vector<int> offspring;        ///< offspring allocated to each species (sum = population)
+  std::vector<bool> stagnant;        ///< whether each species was stagnant
   /// Population-level stagnation struck: only the two best species reproduced, from their champions.
   bool population_stagnation = false;
 };
@@ -116,8 +114,7 @@ class Population {
   Population(const NeatParams& params, Regime regime, const GenomeLayout& layout, Rng& rng);
   /// Continues from a saved state (see state()). Throws std::invalid_argument
   /// if the state does not fit the parameters and layout.
-  Population(const NeatParams& params, Regime regime, const GenomeLayout& layout,
-             PopulationState state);
+  Population(const NeatParams& params, Regime regime, const GenomeLayout& layout, PopulationState state);
 
   const std::vector<Genome>& genomes() const { return s_.genomes; }
   int generation() const { return s_.generation; }

@@ -33,12 +33,18 @@ NodeKind node_kind_from_name(const std::string& name) {
 json genome_to_json(const Genome& g) {
   json nodes = json::array();
   for (const auto& n : g.nodes)
-    nodes.push_back({{"id", n.id}, {"kind", node_kind_name(n.kind)},
-                     {"activation", activation_name(n.activation)}, {"position", n.position}});
+    nodes.push_back({{"id", n.id},
+                     {"kind", node_kind_name(n.kind)},
+                     {"activation", activation_name(n.activation)},
+                     {"position", n.position}});
   json links = json::array();
   for (const auto& l : g.links)
-    links.push_back({{"innovation", l.innovation}, {"from", l.from}, {"to", l.to},
-                     {"weight", l.weight}, {"enabled", l.enabled}, {"born", l.born}});
+    links.push_back({{"innovation", l.innovation},
+                     {"from", l.from},
+                     {"to", l.to},
+                     {"weight", l.weight},
+                     {"enabled", l.enabled},
+                     {"born", l.born}});
   return {{"id", g.id}, {"nodes", std::move(nodes)}, {"links", std::move(links)}};
 }
 
@@ -140,8 +146,7 @@ PopulationState population_state_from_json(const json& j, const std::string& pat
   s.next_innovation = as_i64(field(j, "next_innovation", path), path + ".next_innovation");
   s.next_node_id = as_i32(field(j, "next_node_id", path), path + ".next_node_id");
   s.next_species_id = as_i32(field(j, "next_species_id", path), path + ".next_species_id");
-  s.compatibility_threshold =
-      as_double(field(j, "compatibility_threshold", path), path + ".compatibility_threshold");
+  s.compatibility_threshold = as_double(field(j, "compatibility_threshold", path), path + ".compatibility_threshold");
   s.speciation_threshold = as_double(field(j, "speciation_threshold", path), path + ".speciation_threshold");
   const std::string gp = path + ".genomes";
   const json& genomes = as_array(field(j, "genomes", path), gp);
@@ -152,8 +157,7 @@ PopulationState population_state_from_json(const json& j, const std::string& pat
   const std::string sp = path + ".species";
   const json& species = as_array(field(j, "species", path), sp);
   for (size_t i = 0; i < species.size(); ++i) s.species.push_back(species_from_json(species[i], at(sp, i)));
-  if (j.contains("record_fitness"))
-    s.record_fitness = as_double(j["record_fitness"], path + ".record_fitness");
+  if (j.contains("record_fitness")) s.record_fitness = as_double(j["record_fitness"], path + ".record_fitness");
   if (j.contains("generations_since_record"))
     s.generations_since_record = as_i32(j["generations_since_record"], path + ".generations_since_record");
   return s;

@@ -26,10 +26,9 @@ nlohmann::json species_to_json(const Species& s);
 Species species_from_json(const nlohmann::json& j, const std::string& path = "species");
 
 nlohmann::json population_state_to_json(const PopulationState& s);
-PopulationState population_state_from_json(const nlohmann::json& j,
-                                           const std::string& path = "population");
+PopulationState population_state_from_json(const nlohmann::json& j, const std::string& path = "population");
 
-std::string node_kind_name(NodeKind k);  ///< "input", "bias", "output", "hidden"
+std::string node_kind_name(NodeKind k);                 ///< "input", "bias", "output", "hidden"
 NodeKind node_kind_from_name(const std::string& name);  ///< throws std::invalid_argument
 
 // nlohmann-json's ADL hooks (j = genome; j.get<Genome>()), same formats.

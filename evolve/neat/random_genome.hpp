@@ -9,9 +9,9 @@
 namespace robozoo {
 
 struct RandomGenomeParams {
-  int rounds = 10;                  ///< mutation rounds (count)
-  double add_node_probability = 0.5;///< per round
-  double add_link_probability = 0.5;///< per round
+  int rounds = 10;                    ///< mutation rounds (count)
+  double add_node_probability = 0.5;  ///< per round
+  double add_link_probability = 0.5;  ///< per round
 };
 
 /// Deterministic in rng. Regime decides which links add-link may create.

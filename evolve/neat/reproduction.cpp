@@ -12,8 +12,8 @@ bool is_stagnant(const Species& s, int32_t generation, const NeatParams& p) {
   return generation - s.last_improvement >= p.dropoff_age;
 }
 
-double species_adjusted_fitness(const Species& s, const std::vector<double>& fitness,
-                                int32_t generation, const NeatParams& p) {
+double species_adjusted_fitness(const Species& s, const std::vector<double>& fitness, int32_t generation,
+                                const NeatParams& p) {
   if (s.members.empty()) return 0.0;
   const double size = static_cast<double>(s.members.size());
   double shared = 0.0;
@@ -21,18 +21,17 @@ double species_adjusted_fitness(const Species& s, const std::vector<double>& fit
   return is_stagnant(s, generation, p) ? shared * p.dropoff_factor : shared;
 }
 
-std::vector<int> allocate_offspring(const std::vector<double>& shares, int total,
-                                    const std::vector<double>& fallback) {
+std::vector<int> allocate_offspring(const std::vector<double>& shares, int total, const std::vector<double>& fallback) {
   if (total < 0) throw std::invalid_argument("allocate_offspring: negative total " + std::to_string(total));
   if (shares.size() != fallback.size())
-    throw std::invalid_argument("allocate_offspring: " + std::to_string(shares.size()) +
-                                " shares but " + std::to_string(fallback.size()) + " fallback weights");
+    throw std::invalid_argument("allocate_offspring: " + std::to_string(shares.size()) + " shares but " +
+                                std::to_string(fallback.size()) + " fallback weights");
   auto sum_of = [](const std::vector<double>& v, const char* what) {
     double s = 0.0;
     for (double x : v) {
       if (!std::isfinite(x) || x < 0.0)
-        throw std::invalid_argument(std::string("allocate_offspring: ") + what +
-                                    " must be finite and >= 0, got " + std::to_string(x));
+        throw std::invalid_argument(std::string("allocate_offspring: ") + what + " must be finite and >= 0, got " +
+                                    std::to_string(x));
       s += x;
     }
     return s;

@@ -13,8 +13,8 @@ bool is_stagnant(const Species& s, int32_t generation, const NeatParams& p);
 
 /// Explicit fitness sharing: the sum over a species' members of fitness / size
 /// (its mean raw fitness), times p.dropoff_factor when the species is stagnant.
-double species_adjusted_fitness(const Species& s, const std::vector<double>& fitness,
-                                int32_t generation, const NeatParams& p);
+double species_adjusted_fitness(const Species& s, const std::vector<double>& fitness, int32_t generation,
+                                const NeatParams& p);
 
 /// Splits `total` offspring among species in proportion to `shares`
 /// (largest-remainder method: floors first, the rest one each in decreasing
@@ -22,8 +22,7 @@ double species_adjusted_fitness(const Species& s, const std::vector<double>& fit
 /// zero, `fallback` (e.g. species sizes) is used instead. The counts always sum
 /// to `total`. Throws std::invalid_argument for negative or non-finite shares,
 /// mismatched sizes, or no positive weight at all.
-std::vector<int> allocate_offspring(const std::vector<double>& shares, int total,
-                                    const std::vector<double>& fallback);
+std::vector<int> allocate_offspring(const std::vector<double>& shares, int total, const std::vector<double>& fallback);
 
 /// Stanley's count_offspring (OffspringRounding::Skim). member_values[s][k]: the shared
 /// fitness of member k of species s (raw fitness, times the drop-off factor when the species is

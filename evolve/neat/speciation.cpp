@@ -6,9 +6,8 @@
 
 namespace robozoo {
 
-std::vector<int32_t> speciate(const std::vector<Genome>& genomes, std::vector<Species>& species,
-                              double threshold, const NeatParams& p, int32_t& next_species_id,
-                              int32_t generation) {
+std::vector<int32_t> speciate(const std::vector<Genome>& genomes, std::vector<Species>& species, double threshold,
+                              const NeatParams& p, int32_t& next_species_id, int32_t generation) {
   for (auto& s : species) s.members.clear();
   std::vector<int32_t> species_of(genomes.size(), -1);
   for (size_t i = 0; i < genomes.size(); ++i) {
@@ -34,8 +33,7 @@ std::vector<int32_t> speciate(const std::vector<Genome>& genomes, std::vector<Sp
       species.push_back(std::move(s));
     }
   }
-  species.erase(std::remove_if(species.begin(), species.end(),
-                               [](const Species& s) { return s.members.empty(); }),
+  species.erase(std::remove_if(species.begin(), species.end(), [](const Species& s) { return s.members.empty(); }),
                 species.end());
   return species_of;
 }

@@ -16,9 +16,8 @@ namespace robozoo {
 /// which counts the founding as the previous generation's improvement), best_fitness 0). Members lists
 /// are rebuilt; species left without members are removed. Returns the species
 /// id of each genome.
-std::vector<int32_t> speciate(const std::vector<Genome>& genomes, std::vector<Species>& species,
-                              double threshold, const NeatParams& p, int32_t& next_species_id,
-                              int32_t generation);
+std::vector<int32_t> speciate(const std::vector<Genome>& genomes, std::vector<Species>& species, double threshold,
+                              const NeatParams& p, int32_t& next_species_id, int32_t generation);
 
 /// HyperNEAT raises a threshold below this to it before halving it (distance units).
 constexpr double kHyperNeatThresholdFloor = 0.001;

@@ -57,9 +57,8 @@ XorResult evaluate_xor(const Genome& g, const GenomeLayout& layout, const XorRul
   }
   // Stanley relaxes an acyclic network completely; the project's network does so in one exact
   // pass when it has at least as many updates as the longest path (< number of nodes).
-  const int updates = rules.stanley_activation && !has_cycle(read)
-                          ? std::max(10, static_cast<int>(read.nodes.size()))
-                          : 10;
+  const int updates =
+      rules.stanley_activation && !has_cycle(read) ? std::max(10, static_cast<int>(read.nodes.size())) : 10;
   Network net(read, layout, updates);
   static constexpr double kIn[4][2] = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
   static constexpr double kTarget[4] = {0, 1, 1, 0};

@@ -159,10 +159,8 @@ bool write_all(int fd, const Bytes& data) {
 
 }  // namespace
 
-PipeTransport::PipeTransport(int workers, WorkFn fn, PipeTransportParams params)
-    : fn_(std::move(fn)), params_(params) {
-  if (workers < 1)
-    throw std::invalid_argument("PipeTransport: need at least 1 worker, got " + std::to_string(workers));
+PipeTransport::PipeTransport(int workers, WorkFn fn, PipeTransportParams params) : fn_(std::move(fn)), params_(params) {
+  if (workers < 1) throw std::invalid_argument("PipeTransport: need at least 1 worker, got " + std::to_string(workers));
   if (!fn_) throw std::invalid_argument("PipeTransport: empty work function");
   if (!(params_.shutdown_grace_s >= 0.0) || !std::isfinite(params_.shutdown_grace_s))
     throw std::invalid_argument("PipeTransport: shutdown_grace_s must be finite and >= 0");
@@ -179,17 +177,18 @@ PipeTransport::PipeTransport(int workers, WorkFn fn, PipeTransportParams params)
 PipeTransport::~PipeTransport() {
   // Closing a socket is a worker's signal to finish: it reads end-of-file and exits.
   for (auto& s : slots_) close_fd(s.fd);
-  const auto deadline =
-      Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                         std::chrono::duration<double>(params_.shutdown_grace_s));
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(params_.shutdown_grace_s));
   for (;;) {
     bool waiting = false;
     for (auto& s : slots_) {
       if (s.pid <= 0) continue;
       int status = 0;
       const pid_t r = wait_for(s.pid, &status, WNOHANG);
-      if (r == 0) waiting = true;
-      else s.pid = -1;  // reaped, or not our child any more (ECHILD)
+      if (r == 0)
+        waiting = true;
+      else
+        s.pid = -1;  // reaped, or not our child any more (ECHILD)
     }
     if (!waiting || Clock::now() >= deadline) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -202,8 +201,7 @@ PipeTransport::~PipeTransport() {
 
 void PipeTransport::check(int w) const {
   if (w < 0 || w >= size())
-    throw std::out_of_range("PipeTransport: no worker " + std::to_string(w) + " (have " +
-                            std::to_string(size()) + ")");
+    throw std::out_of_range("PipeTransport: no worker " + std::to_string(w) + " (have " + std::to_string(size()) + ")");
 }
 
 pid_t PipeTransport::pid(int w) const {
@@ -255,8 +253,7 @@ void PipeTransport::discard(int w) {
   slot.out.clear();
   slot.out_sent = 0;
   slot.reader.clear();
-  for (auto it = events_.begin(); it != events_.end();)
-    it = it->worker == w ? events_.erase(it) : it + 1;
+  for (auto it = events_.begin(); it != events_.end();) it = it->worker == w ? events_.erase(it) : it + 1;
 }
 
 void PipeTransport::bury(int w, const std::string& why, bool kill_now) {
@@ -273,8 +270,8 @@ void PipeTransport::bury(int w, const std::string& why, bool kill_now) {
     int status = 0;
     pid_t r = 0;
     if (!kill_now) {
-      const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                               std::chrono::duration<double>(kExitWaitS));
+      const auto deadline =
+          Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kExitWaitS));
       while ((r = wait_for(slot.pid, &status, WNOHANG)) == 0 && Clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::microseconds(200));
       if (r == 0) {
@@ -296,8 +293,8 @@ void PipeTransport::bury(int w, const std::string& why, bool kill_now) {
 void PipeTransport::flush_out(int w) {
   Slot& slot = slots_[static_cast<size_t>(w)];
   while (slot.fd >= 0 && slot.out_sent < slot.out.size()) {
-    const ssize_t n = ::send(slot.fd, slot.out.data() + slot.out_sent, slot.out.size() - slot.out_sent,
-                             MSG_NOSIGNAL | MSG_DONTWAIT);
+    const ssize_t n =
+        ::send(slot.fd, slot.out.data() + slot.out_sent, slot.out.size() - slot.out_sent, MSG_NOSIGNAL | MSG_DONTWAIT);
     if (n >= 0) {
       slot.out_sent += static_cast<size_t>(n);
       continue;
@@ -329,8 +326,10 @@ void PipeTransport::read_from(int w) {
     if (n < 0) {
       if (errno == EINTR) continue;
       if (errno == EAGAIN || errno == EWOULDBLOCK) return;
-      if (errno == ECONNRESET) bury(w, "lost its connection", false);
-      else bury(w, std::string("could not be read from (") + std::strerror(errno) + ")", true);
+      if (errno == ECONNRESET)
+        bury(w, "lost its connection", false);
+      else
+        bury(w, std::string("could not be read from (") + std::strerror(errno) + ")", true);
       return;
     }
     slot.reader.feed(buf, static_cast<size_t>(n));
@@ -355,8 +354,10 @@ bool PipeTransport::send(int w, const Job& job) {
   if (slot.fd < 0) return false;  // dead; its Died event is pending
   const bool idle_before = slot.out_sent == 0 && slot.out.empty();
   Bytes frame = encode_job(job);
-  if (slot.out.empty()) slot.out = std::move(frame);
-  else slot.out.insert(slot.out.end(), frame.begin(), frame.end());
+  if (slot.out.empty())
+    slot.out = std::move(frame);
+  else
+    slot.out.insert(slot.out.end(), frame.begin(), frame.end());
   flush_out(w);
   // Died before taking a single byte of this job: nothing was delivered.
   if (slot.fd < 0 && idle_before) return false;
@@ -367,8 +368,7 @@ std::optional<WorkerEvent> PipeTransport::receive(double timeout_s) {
   if (std::isnan(timeout_s)) throw std::invalid_argument("PipeTransport::receive: NaN timeout");
   const auto start = Clock::now();
   const double clipped = std::min(std::max(timeout_s, 0.0), 1e6);
-  const auto deadline =
-      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(clipped));
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(clipped));
   std::vector<pollfd> fds;
   std::vector<int> owner;
   for (bool first = true;; first = false) {

@@ -33,9 +33,9 @@
 namespace robozoo {
 
 struct PipeTransportParams {
-  double shutdown_grace_s = 2.0;          ///< the destructor waits this long for workers to exit
-                                          ///< after closing their sockets, then SIGKILLs them (s)
-  bool close_inherited_fds = true;        ///< children close all descriptors >= 3 but their socket
+  double shutdown_grace_s = 2.0;                   ///< the destructor waits this long for workers to exit
+                                                   ///< after closing their sockets, then SIGKILLs them (s)
+  bool close_inherited_fds = true;                 ///< children close all descriptors >= 3 but their socket
   uint32_t max_body_bytes = kDefaultMaxBodyBytes;  ///< largest frame body accepted (bytes)
 };
 
@@ -59,9 +59,9 @@ class PipeTransport : public Transport {
  private:
   struct Slot {
     pid_t pid = -1;
-    int fd = -1;         ///< parent's end of the socket pair, non-blocking
-    Bytes out;           ///< encoded bytes not yet written
-    size_t out_sent = 0; ///< bytes of `out` already written
+    int fd = -1;          ///< parent's end of the socket pair, non-blocking
+    Bytes out;            ///< encoded bytes not yet written
+    size_t out_sent = 0;  ///< bytes of `out` already written
     FrameReader reader;
   };
 

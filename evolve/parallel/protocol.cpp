@@ -47,12 +47,10 @@ uint32_t check_header(const uint8_t* h, uint32_t max_body_bytes) {
   if (h[4] != kProtocolVersion)
     throw ProtocolError("worker protocol: version " + std::to_string(h[4]) + ", expected " +
                         std::to_string(kProtocolVersion));
-  if (!known_kind(h[5]))
-    throw ProtocolError("worker protocol: unknown frame kind " + std::to_string(h[5]));
+  if (!known_kind(h[5])) throw ProtocolError("worker protocol: unknown frame kind " + std::to_string(h[5]));
   if (h[6] != 0 || h[7] != 0) throw ProtocolError("worker protocol: reserved bytes not zero");
   const uint32_t n = get_u32(h + 16);
-  if (get_u32(h + 20) != ~n)
-    throw ProtocolError("worker protocol: body length and its complement disagree");
+  if (get_u32(h + 20) != ~n) throw ProtocolError("worker protocol: body length and its complement disagree");
   if (n > max_body_bytes)
     throw ProtocolError("worker protocol: body of " + std::to_string(n) + " bytes exceeds the limit of " +
                         std::to_string(max_body_bytes));
@@ -64,8 +62,7 @@ uint32_t check_header(const uint8_t* h, uint32_t max_body_bytes) {
 }  // namespace
 
 Bytes encode_frame(const Frame& frame) {
-  if (!known_kind(static_cast<uint8_t>(frame.kind)))
-    throw std::invalid_argument("encode_frame: unknown frame kind");
+  if (!known_kind(static_cast<uint8_t>(frame.kind))) throw std::invalid_argument("encode_frame: unknown frame kind");
   if (frame.body.size() > std::numeric_limits<uint32_t>::max())
     throw std::invalid_argument("encode_frame: body of " + std::to_string(frame.body.size()) +
                                 " bytes does not fit the 32-bit length field");
@@ -120,8 +117,7 @@ DecodeStep decode_frame(const uint8_t* data, size_t size, uint32_t max_body_byte
 Frame decode_message(const Bytes& message, uint32_t max_body_bytes) {
   DecodeStep step = decode_frame(message.data(), message.size(), max_body_bytes);
   if (!step.frame)
-    throw ProtocolError("worker protocol: truncated message (" + std::to_string(message.size()) +
-                        " bytes)");
+    throw ProtocolError("worker protocol: truncated message (" + std::to_string(message.size()) + " bytes)");
   if (step.consumed != message.size())
     throw ProtocolError("worker protocol: " + std::to_string(message.size() - step.consumed) +
                         " bytes after the frame");

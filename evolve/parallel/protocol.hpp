@@ -40,8 +40,8 @@ namespace robozoo {
 using Bytes = std::vector<uint8_t>;
 
 inline constexpr uint8_t kProtocolVersion = 1;
-inline constexpr size_t kFrameHeaderBytes = 24;   ///< bytes before the body
-inline constexpr size_t kFrameTrailerBytes = 4;   ///< CRC-32 after the body
+inline constexpr size_t kFrameHeaderBytes = 24;  ///< bytes before the body
+inline constexpr size_t kFrameTrailerBytes = 4;  ///< CRC-32 after the body
 /// Default cap on a body a reader accepts (bytes). Robots' genomes and results are
 /// kilobytes; the cap only stops a corrupted length from allocating gigabytes.
 inline constexpr uint32_t kDefaultMaxBodyBytes = 1u << 30;
@@ -94,8 +94,7 @@ struct DecodeStep {
 /// Decodes the frame at the start of data[0, size). Returns an empty step when more
 /// bytes are needed (as soon as the header is complete it is checked, so a bad
 /// header fails without waiting for its body). Throws ProtocolError on a bad frame.
-DecodeStep decode_frame(const uint8_t* data, size_t size,
-                        uint32_t max_body_bytes = kDefaultMaxBodyBytes);
+DecodeStep decode_frame(const uint8_t* data, size_t size, uint32_t max_body_bytes = kDefaultMaxBodyBytes);
 
 /// Decodes a buffer that must hold exactly one frame (message-based transports).
 /// Throws ProtocolError if it is bad, truncated or followed by extra bytes.
@@ -108,8 +107,7 @@ Result result_from_frame(Frame frame);  ///< accepts Result and Failure
 /// Cuts frames out of a byte stream fed in arbitrary pieces.
 class FrameReader {
  public:
-  explicit FrameReader(uint32_t max_body_bytes = kDefaultMaxBodyBytes)
-      : max_body_bytes_(max_body_bytes) {}
+  explicit FrameReader(uint32_t max_body_bytes = kDefaultMaxBodyBytes) : max_body_bytes_(max_body_bytes) {}
 
   void feed(const uint8_t* data, size_t size);
   /// The next complete frame, or empty if none is buffered yet. Throws ProtocolError
@@ -118,7 +116,11 @@ class FrameReader {
   /// Bytes buffered that do not yet form a frame.
   size_t buffered() const { return buffer_.size() - start_; }
   /// Forgets everything buffered and any earlier error.
-  void clear() { buffer_.clear(); start_ = 0; failed_ = false; }
+  void clear() {
+    buffer_.clear();
+    start_ = 0;
+    failed_ = false;
+  }
 
  private:
   uint32_t max_body_bytes_;

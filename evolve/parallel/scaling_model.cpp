@@ -47,11 +47,14 @@ GenerationProjection project_generation(const GenerationCost& cost, int workers,
   }
   GenerationProjection p;
   p.workers = list_schedule_makespan(occupied, workers);
-  p.root_link = static_cast<double>(occupied.size()) * cost.root_seconds_per_job + bytes / cluster.bandwidth_bytes_per_s;
+  p.root_link =
+      static_cast<double>(occupied.size()) * cost.root_seconds_per_job + bytes / cluster.bandwidth_bytes_per_s;
   p.serial = cost.serial_seconds;
   p.seconds = p.serial + std::max(p.workers, p.root_link);
-  if (p.serial > std::max(p.workers, p.root_link)) p.bound = "rank 0 serial";
-  else p.bound = p.workers >= p.root_link ? "evaluations" : "rank 0 messaging";
+  if (p.serial > std::max(p.workers, p.root_link))
+    p.bound = "rank 0 serial";
+  else
+    p.bound = p.workers >= p.root_link ? "evaluations" : "rank 0 messaging";
   return p;
 }
 

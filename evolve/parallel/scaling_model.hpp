@@ -18,18 +18,18 @@
 namespace robozoo {
 
 struct ClusterParams {
-  double latency_s = 50e-6;               ///< one-way latency of a message, MPI over TCP on
-                                          ///< Ethernet ~50 us, InfiniBand ~2 us (s)
-  double bandwidth_bytes_per_s = 125e6;   ///< rank 0's link: 1 Gbit/s Ethernet = 125e6 (bytes/s)
-  double core_speed = 1.0;                ///< a cluster core's speed relative to the measuring
-                                          ///< machine's, for evaluations (ratio)
+  double latency_s = 50e-6;              ///< one-way latency of a message, MPI over TCP on
+                                         ///< Ethernet ~50 us, InfiniBand ~2 us (s)
+  double bandwidth_bytes_per_s = 125e6;  ///< rank 0's link: 1 Gbit/s Ethernet = 125e6 (bytes/s)
+  double core_speed = 1.0;               ///< a cluster core's speed relative to the measuring
+                                         ///< machine's, for evaluations (ratio)
 };
 
 /// One generation's costs as measured.
 struct GenerationCost {
-  std::vector<double> job_seconds;  ///< each job's evaluation time on one core, in job order (s)
-  std::vector<double> job_bytes;    ///< each job's Job + Result message bytes, in job order (bytes)
-  double serial_seconds = 0.0;      ///< rank 0 alone: breeding, logging, publishing, checkpoint (s)
+  std::vector<double> job_seconds;    ///< each job's evaluation time on one core, in job order (s)
+  std::vector<double> job_bytes;      ///< each job's Job + Result message bytes, in job order (bytes)
+  double serial_seconds = 0.0;        ///< rank 0 alone: breeding, logging, publishing, checkpoint (s)
   double root_seconds_per_job = 0.0;  ///< rank 0's own time per job handed out and collected (s)
 };
 

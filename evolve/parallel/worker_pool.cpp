@@ -24,8 +24,7 @@ struct WorkerPool::MapRun {
 
 WorkerPool::WorkerPool(int workers, WorkFn fn, PoolParams params) : params_(params) {
   validate();
-  if (workers < 1)
-    throw std::invalid_argument("WorkerPool: need at least 1 worker, got " + std::to_string(workers));
+  if (workers < 1) throw std::invalid_argument("WorkerPool: need at least 1 worker, got " + std::to_string(workers));
   transport_ = std::make_unique<PipeTransport>(workers, std::move(fn), params_.pipe);
   slots_.resize(static_cast<size_t>(workers));
 }
@@ -45,8 +44,7 @@ void WorkerPool::validate() const {
     throw std::invalid_argument("WorkerPool: job_timeout_s must be > 0 (or +infinity), got " +
                                 std::to_string(params_.job_timeout_s));
   if (params_.max_attempts < 1)
-    throw std::invalid_argument("WorkerPool: max_attempts must be >= 1, got " +
-                                std::to_string(params_.max_attempts));
+    throw std::invalid_argument("WorkerPool: max_attempts must be >= 1, got " + std::to_string(params_.max_attempts));
 }
 
 double WorkerPool::now() const {
@@ -102,8 +100,8 @@ void WorkerPool::assign(MapRun& run) {
     run.pending.pop_front();
     slot.state = State::Busy;
     slot.job = j;
-    slot.deadline = std::isinf(params_.job_timeout_s) ? std::numeric_limits<double>::infinity()
-                                                      : now() + params_.job_timeout_s;
+    slot.deadline =
+        std::isinf(params_.job_timeout_s) ? std::numeric_limits<double>::infinity() : now() + params_.job_timeout_s;
   }
 }
 
@@ -126,15 +124,15 @@ void WorkerPool::handle(MapRun& run, WorkerEvent event) {
   if (!busy || event.result.index != static_cast<uint64_t>(j)) {
     ++stats_.worker_deaths;
     restart(w);
-    const std::string why = "worker " + std::to_string(w) + " answered job " +
-                            std::to_string(event.result.index) + ", which it was not given";
+    const std::string why = "worker " + std::to_string(w) + " answered job " + std::to_string(event.result.index) +
+                            ", which it was not given";
     if (busy) charge(run, j, why);
     return;
   }
   slot.state = State::Idle;
   if (!event.result.ok)
-    throw PoolError("WorkerPool: job " + std::to_string(j) + " failed in worker " + std::to_string(w) +
-                    ": " + event.result.error);
+    throw PoolError("WorkerPool: job " + std::to_string(j) + " failed in worker " + std::to_string(w) + ": " +
+                    event.result.error);
   run.results[j] = std::move(event.result.payload);
   run.done[j] = 1;
   --run.remaining;
@@ -149,17 +147,18 @@ void WorkerPool::expire(MapRun& run) {
     const size_t j = slot.job;
     ++stats_.job_timeouts;
     restart(w);  // kills the hung worker
-    charge(run, j, "worker " + std::to_string(w) + " ran past job_timeout_s = " +
-                       std::to_string(params_.job_timeout_s) + " s and was killed");
+    charge(run, j,
+           "worker " + std::to_string(w) + " ran past job_timeout_s = " + std::to_string(params_.job_timeout_s) +
+               " s and was killed");
   }
 }
 
 void WorkerPool::charge(MapRun& run, size_t j, const std::string& reason) {
   const int n = ++run.failures[j];
   if (n >= params_.max_attempts)
-    throw PoolError("WorkerPool: job " + std::to_string(j) + " failed: its worker died " + std::to_string(n) +
-                    " time" + (n == 1 ? "" : "s") + " (max_attempts = " +
-                    std::to_string(params_.max_attempts) + "); last: " + reason);
+    throw PoolError("WorkerPool: job " + std::to_string(j) + " failed: its worker died " + std::to_string(n) + " time" +
+                    (n == 1 ? "" : "s") + " (max_attempts = " + std::to_string(params_.max_attempts) +
+                    "); last: " + reason);
   run.pending.push_front(j);  // soonest retry: the job has waited longest
   ++stats_.jobs_reissued;
 }

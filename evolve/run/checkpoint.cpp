@@ -98,13 +98,12 @@ Checkpoint checkpoint_from_text(const std::string& text, const std::string& path
       throw std::runtime_error("not a robozoo checkpoint");
     const int64_t version = as_i64(field(j, "format_version", "checkpoint"), "checkpoint.format_version");
     if (version != Checkpoint::kFormatVersion)
-      throw std::runtime_error(
-          "checkpoint format version " + std::to_string(version) + " is not the supported " +
-          std::to_string(Checkpoint::kFormatVersion) +
-          (version < Checkpoint::kFormatVersion
-               ? " (written by an older robozoo, before node genes had drawing positions and the "
-                 "HyperNEAT topology rules; it cannot be resumed: start the run again)"
-               : " (written by a newer robozoo)"));
+      throw std::runtime_error("checkpoint format version " + std::to_string(version) + " is not the supported " +
+                               std::to_string(Checkpoint::kFormatVersion) +
+                               (version < Checkpoint::kFormatVersion
+                                    ? " (written by an older robozoo, before node genes had drawing positions and the "
+                                      "HyperNEAT topology rules; it cannot be resumed: start the run again)"
+                                    : " (written by a newer robozoo)"));
     const std::string p = "checkpoint";
     Checkpoint c;
     c.run_id = as_string(field(j, "run_id", p), p + ".run_id");
@@ -119,8 +118,7 @@ Checkpoint checkpoint_from_text(const std::string& text, const std::string& path
     c.log_events = as_i64(field(j, "log_events", p), p + ".log_events");
     c.elapsed_seconds = as_double(field(j, "elapsed_seconds", p), p + ".elapsed_seconds");
     c.finished = as_bool(field(j, "finished", p), p + ".finished");
-    if (c.log_bytes < 0 || c.log_events < 0 || c.evaluations < 0)
-      throw std::runtime_error("negative counts");
+    if (c.log_bytes < 0 || c.log_events < 0 || c.evaluations < 0) throw std::runtime_error("negative counts");
     return c;
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": malformed checkpoint: " + e.what());

@@ -48,8 +48,7 @@ ResultFigures summarize_results(const std::vector<EvalSummary>& results, const s
   size_t champ = 0;
   double sum = 0.0;
   for (size_t i = 0; i < results.size(); ++i) {
-    if (results[i].genome_id != genomes[i].id)
-      throw std::logic_error("evaluator returned results out of order");
+    if (results[i].genome_id != genomes[i].id) throw std::logic_error("evaluator returned results out of order");
     sum += results[i].fitness;
     if (results[i].fitness > results[champ].fitness) champ = i;
     ++s.outcome_counts[static_cast<int>(results[i].outcome)];
@@ -73,9 +72,7 @@ bool file_exists(const std::string& p) {
 
 }  // namespace
 
-std::string default_run_id(const RunConfig& c) {
-  return regime_name(c.regime) + "-s" + std::to_string(c.seed);
-}
+std::string default_run_id(const RunConfig& c) { return regime_name(c.regime) + "-s" + std::to_string(c.seed); }
 
 std::string format_progress(const ProgressReport& r) {
   char buf[256];
@@ -97,8 +94,8 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     throw std::invalid_argument(
         "overlap_trajectory needs an evaluator whose simulations run in other processes: ODE's random "
         "constraint order is process-wide, so two simulations at once in one process differ");
-  checkpoint_path_ = options_.checkpoint_path.empty() ? checkpoint_path_for(options_.log_path)
-                                                      : options_.checkpoint_path;
+  checkpoint_path_ =
+      options_.checkpoint_path.empty() ? checkpoint_path_for(options_.log_path) : options_.checkpoint_path;
   const GenomeLayout layout = robot_layout();
   if (options_.resume && (options_.checkpoint || file_exists(checkpoint_path_))) {
     Checkpoint c = options_.checkpoint ? std::move(*options_.checkpoint) : read_checkpoint(checkpoint_path_);
@@ -110,13 +107,13 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
       throw std::runtime_error(checkpoint_path_ + ": its configuration is invalid: " + e.what());
     }
     if (c.software_version != software_version() && !options_.force_version)
-      throw std::runtime_error(checkpoint_path_ + ": written by robozoo " + c.software_version +
-                               ", this is robozoo " + software_version() +
+      throw std::runtime_error(checkpoint_path_ + ": written by robozoo " + c.software_version + ", this is robozoo " +
+                               software_version() +
                                "; resume with that version (another version may grow, simulate or breed "
                                "differently), or --force to continue anyway");
     if (options_.generations > 0 && options_.generations < saved.generations)
-      throw std::invalid_argument(checkpoint_path_ + ": the run was started for " +
-                                  std::to_string(saved.generations) + " generations; it can be extended, not cut to " +
+      throw std::invalid_argument(checkpoint_path_ + ": the run was started for " + std::to_string(saved.generations) +
+                                  " generations; it can be extended, not cut to " +
                                   std::to_string(options_.generations));
     const bool extend_finished = c.finished && options_.generations > saved.generations;
     if (options_.generations > 0) saved.generations = options_.generations;
@@ -146,8 +143,8 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
       }
       population_->advance(fitness, rng_);
     }
-    checkpoint_writer_ = std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint,
-                                                            generations_done());
+    checkpoint_writer_ =
+        std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint, generations_done());
     if (!finished_) {
       log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
       // Stamps run ahead of the clock while messages wait for their turn: the

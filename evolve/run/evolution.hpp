@@ -23,45 +23,45 @@
 namespace robozoo {
 
 struct EvolveOptions {
-  std::string run_id;           ///< empty: "<regime>-s<seed>"
-  std::string log_path;         ///< the run's LCM log
-  std::string checkpoint_path;  ///< empty: checkpoint_path_for(log_path)
-  std::string lcm_url;          ///< empty: no live publishing
-  BusPacing bus_pacing;         ///< when messages go out on the bus, and so their time stamps in the
-                                ///< log, bus or not (BusPacer)
-  bool resume = false;          ///< continue from the checkpoint
+  std::string run_id;                    ///< empty: "<regime>-s<seed>"
+  std::string log_path;                  ///< the run's LCM log
+  std::string checkpoint_path;           ///< empty: checkpoint_path_for(log_path)
+  std::string lcm_url;                   ///< empty: no live publishing
+  BusPacing bus_pacing;                  ///< when messages go out on the bus, and so their time stamps in the
+                                         ///< log, bus or not (BusPacer)
+  bool resume = false;                   ///< continue from the checkpoint
   std::optional<Checkpoint> checkpoint;  ///< with resume: the checkpoint, already read by the caller
                                          ///< (empty: read from checkpoint_path when it exists)
-  bool force_version = false;   ///< resume a checkpoint written by another robozoo version anyway
-  int32_t generations = 0;      ///< with resume: run to this many generations, at least the checkpoint's
-                                ///< (count; 0: the checkpoint's). More extends the run, finished or not,
-                                ///< to what an uninterrupted run of that many generations logs.
-  bool background_checkpoint = false;  ///< write each generation's checkpoint on a thread while the
-                                       ///< next generation is evaluated (robozoo-evolve --mpi: rank 0's
-                                       ///< largest serial cost); a failed write is reported one
-                                       ///< generation later, the last one before run() returns
-  bool overlap_trajectory = false;  ///< re-simulate a new champion for its pose stream on a thread
-                                    ///< while the next generation is evaluated (robozoo-evolve --mpi:
-                                    ///< rank 0 waits for the workers then); its poses, then its
-                                    ///< generation's checkpoint, are written once that evaluation
-                                    ///< returns. The log holds the same messages in the same order.
-                                    ///< Only with an evaluator that does not simulate in this
-                                    ///< process (Evaluator::simulates_in_process; else the
-                                    ///< constructor throws std::invalid_argument).
+  bool force_version = false;            ///< resume a checkpoint written by another robozoo version anyway
+  int32_t generations = 0;               ///< with resume: run to this many generations, at least the checkpoint's
+                                         ///< (count; 0: the checkpoint's). More extends the run, finished or not,
+                                         ///< to what an uninterrupted run of that many generations logs.
+  bool background_checkpoint = false;    ///< write each generation's checkpoint on a thread while the
+                                         ///< next generation is evaluated (robozoo-evolve --mpi: rank 0's
+                                         ///< largest serial cost); a failed write is reported one
+                                         ///< generation later, the last one before run() returns
+  bool overlap_trajectory = false;       ///< re-simulate a new champion for its pose stream on a thread
+                                         ///< while the next generation is evaluated (robozoo-evolve --mpi:
+                                         ///< rank 0 waits for the workers then); its poses, then its
+                                         ///< generation's checkpoint, are written once that evaluation
+                                         ///< returns. The log holds the same messages in the same order.
+                                         ///< Only with an evaluator that does not simulate in this
+                                         ///< process (Evaluator::simulates_in_process; else the
+                                         ///< constructor throws std::invalid_argument).
 };
 
 /// Where the evolution process's time went in one generation (s): the serial part
 /// of a run, which more workers (or MPI ranks) do not shorten.
 struct StepTimings {
-  double evaluate = 0.0;    ///< waiting for the evaluator's results (s)
-  double messages = 0.0;    ///< building, logging and publishing the run, generation, genome and
-                            ///< morphology messages, growing the published genomes' robots (s)
-  double trajectory = 0.0;  ///< re-simulating a new champion and logging its poses (s)
-  double breeding = 0.0;    ///< selection, speciation and reproduction: Population::advance (s)
-  double checkpoint = 0.0;  ///< syncing the log to disk and writing the checkpoint (s)
+  double evaluate = 0.0;          ///< waiting for the evaluator's results (s)
+  double messages = 0.0;          ///< building, logging and publishing the run, generation, genome and
+                                  ///< morphology messages, growing the published genomes' robots (s)
+  double trajectory = 0.0;        ///< re-simulating a new champion and logging its poses (s)
+  double breeding = 0.0;          ///< selection, speciation and reproduction: Population::advance (s)
+  double checkpoint = 0.0;        ///< syncing the log to disk and writing the checkpoint (s)
   double final_checkpoint = 0.0;  ///< the run's last generation only: waiting until its last checkpoint,
                                   ///< written in the background, is on disk (s; once a run)
-  double total = 0.0;       ///< the whole generation, evaluation and final_checkpoint included (s)
+  double total = 0.0;             ///< the whole generation, evaluation and final_checkpoint included (s)
   /// Rank 0's serial part of a generation: all but the evaluation and the
   /// once-a-run final wait (s).
   double serial() const { return total - evaluate - final_checkpoint; }
@@ -186,22 +186,22 @@ class Evolution {
   std::unique_ptr<Population> population_;
   std::optional<EventLogWriter> log_;
   std::unique_ptr<Bus> bus_;
-  BusPacer pacer_;                 // every message's time on the bus and in the log
+  BusPacer pacer_;  // every message's time on the bus and in the log
   std::unique_ptr<CheckpointWriter> checkpoint_writer_;
   int64_t evaluations_ = 0;
   int64_t start_evaluations_ = 0;  // evaluations_ when this process took the run over
   int start_generation_ = 0;
-  int64_t bus_statuses_ = 0;       // ROBOZOO_BUS messages sent (not counted as published run messages)
+  int64_t bus_statuses_ = 0;  // ROBOZOO_BUS messages sent (not counted as published run messages)
   int64_t bus_status_bytes_ = 0;
   double best_so_far_ = 0.0;
   uint64_t last_champion_hash_ = 0;  // content hash (id aside) of the last champion
-  double elapsed_before_ = 0.0;   // from earlier sessions of a resumed run
+  double elapsed_before_ = 0.0;      // from earlier sessions of a resumed run
   double elapsed_ = 0.0;
   bool finished_ = false;
   bool resumed_ = false;
   std::future<std::vector<pose_t>> pending_poses_;  // overlap_trajectory: the last generation's, simulating
-  std::optional<Checkpoint> held_checkpoint_;        // the last generation's, once its poses were logged
-  int held_generations_ = 0;                         // finished generations it holds
+  std::optional<Checkpoint> held_checkpoint_;       // the last generation's, once its poses were logged
+  int held_generations_ = 0;                        // finished generations it holds
 };
 
 }  // namespace robozoo

@@ -53,8 +53,7 @@ void ContactFinder::find(const OdeWorld& world, const SimParams& params, std::ve
   }
 }
 
-void add_contact_joints(const OdeWorld& world, const SimParams& params,
-                        const std::vector<Contact>& contacts) {
+void add_contact_joints(const OdeWorld& world, const SimParams& params, const std::vector<Contact>& contacts) {
   for (const Contact& c : contacts) {
     dContact ct{};
     ct.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;

@@ -29,8 +29,8 @@ class ContactFinder {
 
   /// Finds this instant's contacts into `out` (cleared first) and marks, per
   /// sphere, touching (any contact) and on_ground (a ground contact).
-  void find(const OdeWorld& world, const SimParams& params, std::vector<Contact>& out,
-            std::vector<uint8_t>& touching, std::vector<uint8_t>& on_ground) const;
+  void find(const OdeWorld& world, const SimParams& params, std::vector<Contact>& out, std::vector<uint8_t>& touching,
+            std::vector<uint8_t>& on_ground) const;
 
   /// The pairs (i, j), i < j, that may collide, in the order they are tested.
   const std::vector<std::pair<int, int>>& pairs() const { return pairs_; }
@@ -43,7 +43,6 @@ class ContactFinder {
 
 /// Creates one soft contact joint per contact in the world's contact group
 /// (dContactSoftERP | dContactSoftCFM | dContactApprox1, friction mu).
-void add_contact_joints(const OdeWorld& world, const SimParams& params,
-                        const std::vector<Contact>& contacts);
+void add_contact_joints(const OdeWorld& world, const SimParams& params, const std::vector<Contact>& contacts);
 
 }  // namespace robozoo

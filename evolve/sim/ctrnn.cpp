@@ -11,11 +11,9 @@ Ctrnn::Ctrnn(const Robot& robot) : robot_(&robot) {
   const int n = static_cast<int>(robot.neurons.size());
   const int k = static_cast<int>(robot.sensors.size());
   if (robot.w_neuron_neuron.rows() != n || robot.w_neuron_neuron.cols() != n)
-    throw std::invalid_argument("Ctrnn: w_neuron_neuron must be " + std::to_string(n) + "x" +
-                                std::to_string(n));
+    throw std::invalid_argument("Ctrnn: w_neuron_neuron must be " + std::to_string(n) + "x" + std::to_string(n));
   if (robot.w_sensor_neuron.rows() != k || robot.w_sensor_neuron.cols() != n)
-    throw std::invalid_argument("Ctrnn: w_sensor_neuron must be " + std::to_string(k) + "x" +
-                                std::to_string(n));
+    throw std::invalid_argument("Ctrnn: w_sensor_neuron must be " + std::to_string(k) + "x" + std::to_string(n));
   for (int i = 0; i < n; ++i)
     if (!(robot.neurons[i].tau > 0))
       throw std::invalid_argument("Ctrnn: neuron " + std::to_string(i) + " has tau <= 0");

@@ -30,8 +30,7 @@ SimResult apply_rules(const EpisodeRecord& rec, double d_init, double d_final, c
   r.max_angular_acceleration = rec.max_angular_acceleration;
   const double n = std::max(1, rec.steps_run);
   for (int g : rec.ground_steps) r.ground_contact_fraction.push_back(rec.steps_run ? g / n : 0.0);
-  for (const auto& w : rec.angular_velocity_sum)
-    r.mean_angular_speed.push_back(rec.steps_run ? (w / n).norm() : 0.0);
+  for (const auto& w : rec.angular_velocity_sum) r.mean_angular_speed.push_back(rec.steps_run ? (w / n).norm() : 0.0);
   const auto over = [](const std::vector<double>& xs, double t) {
     return std::any_of(xs.begin(), xs.end(), [t](double x) { return x > t; });
   };

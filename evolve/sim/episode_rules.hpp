@@ -43,8 +43,7 @@ bool acceleration_fault(double linear_acceleration, double angular_acceleration,
 
 /// True when every body's speeds are below the rest speeds and every neuron
 /// output changed by less than rest_output_rate * dt in the last step.
-bool at_rest(const std::vector<Eigen::Vector3d>& linear_velocity,
-             const std::vector<Eigen::Vector3d>& angular_velocity,
+bool at_rest(const std::vector<Eigen::Vector3d>& linear_velocity, const std::vector<Eigen::Vector3d>& angular_velocity,
              const std::vector<double>& output_change, const SimParams& params);
 
 /// The episode's result from its record (precedence above). d_final is the

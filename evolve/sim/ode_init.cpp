@@ -12,8 +12,7 @@ void ensure_ode_initialized() {
   std::call_once(once, [] {
     if (!dInitODE2(0)) throw std::runtime_error("dInitODE2 failed");
   });
-  if (!dAllocateODEDataForThread(dAllocateMaskAll))
-    throw std::runtime_error("dAllocateODEDataForThread failed");
+  if (!dAllocateODEDataForThread(dAllocateMaskAll)) throw std::runtime_error("dAllocateODEDataForThread failed");
 }
 
 }  // namespace robozoo

@@ -13,8 +13,7 @@ std::string outcome_name(Outcome o) {
     case Outcome::RollingContact: return "rolling_contact";
     case Outcome::RollingSpin: return "rolling_spin";
   }
-  throw std::invalid_argument("outcome_name: unknown outcome code " +
-                              std::to_string(static_cast<int>(o)));
+  throw std::invalid_argument("outcome_name: unknown outcome code " + std::to_string(static_cast<int>(o)));
 }
 
 }  // namespace robozoo

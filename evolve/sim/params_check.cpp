@@ -38,8 +38,7 @@ void check_sim_params(const SimParams& p) {
   require(p.rest_steps >= 1, "rest_steps", ">= 1");
   require(p.max_linear_acceleration > 0, "max_linear_acceleration", "> 0");
   require(p.max_angular_acceleration > 0, "max_angular_acceleration", "> 0");
-  require(p.rolling_contact_fraction >= 0 && p.rolling_contact_fraction <= 1, "rolling_contact_fraction",
-          "in [0, 1]");
+  require(p.rolling_contact_fraction >= 0 && p.rolling_contact_fraction <= 1, "rolling_contact_fraction", "in [0, 1]");
   require(p.rolling_spin_threshold >= 0, "rolling_spin_threshold", ">= 0");
 }
 

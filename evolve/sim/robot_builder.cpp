@@ -7,9 +7,9 @@ namespace robozoo {
 
 int RobotBuilder::add(Spec s) {
   const int i = size();
-  if ((i == 0) != (s.sphere.parent < 0))
-    throw std::invalid_argument("RobotBuilder: add the root first, and only once");
-  if (s.sphere.parent >= i) throw std::invalid_argument("RobotBuilder: parent " + std::to_string(s.sphere.parent) + " does not exist");
+  if ((i == 0) != (s.sphere.parent < 0)) throw std::invalid_argument("RobotBuilder: add the root first, and only once");
+  if (s.sphere.parent >= i)
+    throw std::invalid_argument("RobotBuilder: parent " + std::to_string(s.sphere.parent) + " does not exist");
   if (!(s.sphere.radius > 0)) throw std::invalid_argument("RobotBuilder: radius must be > 0");
   s.sphere.index = i;
   if (s.sphere.parent >= 0) ++spheres_[s.sphere.parent].sphere.num_children;
@@ -28,7 +28,7 @@ int RobotBuilder::add_root(const Eigen::Vector3d& c, double radius, double densi
 }
 
 RobotBuilder::Spec RobotBuilder::child_spec(int parent, const Eigen::Vector3d& c, double radius, double density,
-                                             uint8_t sensors) {
+                                            uint8_t sensors) {
   Spec s;
   s.sphere.parent = parent;
   s.sphere.center = c;
@@ -38,8 +38,7 @@ RobotBuilder::Spec RobotBuilder::child_spec(int parent, const Eigen::Vector3d& c
   return s;
 }
 
-int RobotBuilder::add_fused(int parent, const Eigen::Vector3d& c, double radius, double density,
-                            uint8_t sensors) {
+int RobotBuilder::add_fused(int parent, const Eigen::Vector3d& c, double radius, double density, uint8_t sensors) {
   if (parent < 0) throw std::invalid_argument("RobotBuilder: a fused sphere needs a parent");
   return add(child_spec(parent, c, radius, density, sensors));
 }

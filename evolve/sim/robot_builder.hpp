@@ -20,13 +20,11 @@ class RobotBuilder {
   /// density (mass per m^3), sensors (SensorBit mask).
   int add_root(const Eigen::Vector3d& center, double radius, double density = 1.0, uint8_t sensors = 0);
   /// A sphere fused to `parent` (same rigid body). Returns its index.
-  int add_fused(int parent, const Eigen::Vector3d& center, double radius, double density = 1.0,
-                uint8_t sensors = 0);
+  int add_fused(int parent, const Eigen::Vector3d& center, double radius, double density = 1.0, uint8_t sensors = 0);
   /// A sphere joined to `parent` by a hinge at its own centre: unit axis, half
   /// range (rad), motor neuron time constant (s) and bias. Returns its index.
-  int add_jointed(int parent, const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& axis,
-                  double range, double tau = 0.5, double omega = 0.0, double density = 1.0,
-                  uint8_t sensors = 0);
+  int add_jointed(int parent, const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& axis, double range,
+                  double tau = 0.5, double omega = 0.0, double density = 1.0, uint8_t sensors = 0);
   int size() const { return static_cast<int>(spheres_.size()); }
 
   /// The model, with zero weight matrices of the right sizes. When

@@ -9,9 +9,7 @@
 namespace robozoo {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) {
-  throw std::invalid_argument("robot model: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("robot model: " + what); }
 std::string str(int i) { return std::to_string(i); }
 
 int find_root(std::vector<int>& up, int a) {
@@ -90,8 +88,7 @@ void check_robot(const Robot& robot) {
     fail("w_sensor_neuron must be " + str(ns) + "x" + str(nn));
   if (robot.w_neuron_neuron.rows() != nn || robot.w_neuron_neuron.cols() != nn)
     fail("w_neuron_neuron must be " + str(nn) + "x" + str(nn));
-  if (!robot.w_sensor_neuron.allFinite() || !robot.w_neuron_neuron.allFinite())
-    fail("non-finite CTRNN weight");
+  if (!robot.w_sensor_neuron.allFinite() || !robot.w_neuron_neuron.allFinite()) fail("non-finite CTRNN weight");
 }
 
 }  // namespace robozoo

@@ -15,10 +15,9 @@ double time_sensor_value(double time, const SimParams& p) {
   return math::sin(2.0 * M_PI * p.time_sensor_frequency * time);
 }
 
-void read_sensors(const Robot& robot, const SimParams& p,
-                  const std::vector<Eigen::Vector3d>& centers, const std::vector<uint8_t>& touching,
-                  const std::vector<double>& angles, const std::vector<int>& joint_of_sphere,
-                  double time, std::vector<double>& out) {
+void read_sensors(const Robot& robot, const SimParams& p, const std::vector<Eigen::Vector3d>& centers,
+                  const std::vector<uint8_t>& touching, const std::vector<double>& angles,
+                  const std::vector<int>& joint_of_sphere, double time, std::vector<double>& out) {
   out.resize(robot.sensors.size());
   double time_value = 0.0;  // one value for every time sensor of this instant, computed once
   bool time_done = false;

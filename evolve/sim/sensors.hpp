@@ -21,8 +21,7 @@ double time_sensor_value(double time, const SimParams& params);
 /// Fills `out` (resized to robot.sensors.size()). sphere_centers and touching are
 /// per sphere; joint_angles per joint; joint_of_sphere maps a sphere to its joint
 /// index or -1.
-void read_sensors(const Robot& robot, const SimParams& params,
-                  const std::vector<Eigen::Vector3d>& sphere_centers,
+void read_sensors(const Robot& robot, const SimParams& params, const std::vector<Eigen::Vector3d>& sphere_centers,
                   const std::vector<uint8_t>& touching, const std::vector<double>& joint_angles,
                   const std::vector<int>& joint_of_sphere, double time, std::vector<double>& out);
 

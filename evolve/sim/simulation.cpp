@@ -89,8 +89,8 @@ struct Simulation::Impl {
     for (int s = 0; s < world.num_spheres(); ++s) state.sphere_center[s] = world.sphere_center(s);
     for (int k = 0; k < world.num_joints(); ++k) angles[k] = dJointGetHingeAngle(world.hinge(k));
     state.neuron_output = ctrnn.outputs();
-    read_sensors(robot, p, state.sphere_center, state.sphere_touching, angles, joint_of_sphere,
-                 state.time, state.sensor_value);
+    read_sensors(robot, p, state.sphere_center, state.sphere_touching, angles, joint_of_sphere, state.time,
+                 state.sensor_value);
   }
 
   bool step() {

@@ -18,12 +18,12 @@ namespace robozoo {
 /// Result of a whole episode: what the fitness's d term and outcome come from.
 struct SimResult {
   Outcome outcome = Outcome::Completed;
-  int steps_run = 0;                 ///< steps actually simulated (count)
-  bool stopped_early = false;        ///< every body came to rest before the last step
-  double d_init = 0.0;               ///< initial COM distance to the target (m)
-  double d_final = 0.0;              ///< final COM distance, = d_init when invalidated (m)
-  double d = 0.0;                    ///< d_init - d_final, 0 when invalidated (m)
-  double d_raw = 0.0;                ///< d_init - (actual final distance), before the rules (m)
+  int steps_run = 0;                            ///< steps actually simulated (count)
+  bool stopped_early = false;                   ///< every body came to rest before the last step
+  double d_init = 0.0;                          ///< initial COM distance to the target (m)
+  double d_final = 0.0;                         ///< final COM distance, = d_init when invalidated (m)
+  double d = 0.0;                               ///< d_init - d_final, 0 when invalidated (m)
+  double d_raw = 0.0;                           ///< d_init - (actual final distance), before the rules (m)
   std::vector<double> ground_contact_fraction;  ///< per sphere, steps touching ground / steps_run
   std::vector<double> mean_angular_speed;       ///< per body, |time-averaged angular velocity| (rad/s)
   double max_linear_acceleration = 0.0;         ///< largest seen (m/s^2)
@@ -32,14 +32,14 @@ struct SimResult {
 
 /// State observable after any step (for poses, replay and rendering).
 struct SimState {
-  int step = 0;                      ///< steps taken so far
-  double time = 0.0;                 ///< simulated time (s)
-  std::vector<Eigen::Vector3d> body_position;       ///< body origin = its centre of mass (m)
-  std::vector<Eigen::Vector4d> body_quaternion;     ///< (w, x, y, z)
-  std::vector<Eigen::Vector3d> sphere_center;       ///< world centre of every sphere (m)
-  std::vector<double> neuron_output;                ///< CTRNN outputs
-  std::vector<double> sensor_value;                 ///< robot.sensors order
-  std::vector<uint8_t> sphere_touching;             ///< touch contact this step, per sphere
+  int step = 0;                                  ///< steps taken so far
+  double time = 0.0;                             ///< simulated time (s)
+  std::vector<Eigen::Vector3d> body_position;    ///< body origin = its centre of mass (m)
+  std::vector<Eigen::Vector4d> body_quaternion;  ///< (w, x, y, z)
+  std::vector<Eigen::Vector3d> sphere_center;    ///< world centre of every sphere (m)
+  std::vector<double> neuron_output;             ///< CTRNN outputs
+  std::vector<double> sensor_value;              ///< robot.sensors order
+  std::vector<uint8_t> sphere_touching;          ///< touch contact this step, per sphere
 };
 
 class Simulation {

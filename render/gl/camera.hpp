@@ -9,12 +9,12 @@
 namespace robozoo::render {
 
 struct Camera {
-  Eigen::Vector3d eye{-3, -6, 3};     ///< (m)
-  Eigen::Vector3d target{0, 0, 0};    ///< point looked at (m)
-  Eigen::Vector3d up{0, 0, 1};        ///< world up
-  double fov_y_deg = 30.0;            ///< vertical field of view (degrees)
-  double near_m = 0.05;               ///< near clipping distance (m)
-  double far_m = 200.0;               ///< far clipping distance (m)
+  Eigen::Vector3d eye{-3, -6, 3};   ///< (m)
+  Eigen::Vector3d target{0, 0, 0};  ///< point looked at (m)
+  Eigen::Vector3d up{0, 0, 1};      ///< world up
+  double fov_y_deg = 30.0;          ///< vertical field of view (degrees)
+  double near_m = 0.05;             ///< near clipping distance (m)
+  double far_m = 200.0;             ///< far clipping distance (m)
 };
 
 /// The direction cameras look from.
@@ -40,8 +40,8 @@ Eigen::Vector3d project_to_pixel(const Camera& c, int width, int height, const E
 /// large as possible with `margin` (fraction of the image kept free on each
 /// side); near/far set from the distance. Throws std::invalid_argument when
 /// there are no spheres or the sizes differ.
-Camera frame_spheres(const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
-                     double aspect, const ViewAngles& angles, double margin = 0.08);
+Camera frame_spheres(const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii, double aspect,
+                     const ViewAngles& angles, double margin = 0.08);
 
 /// A camera that follows a moving point smoothly: the eye keeps a fixed offset
 /// (direction and distance) from a target that trails the point like a

@@ -14,16 +14,25 @@ namespace robozoo::render {
 namespace {
 void check_size(int width, int height) {
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-    throw std::invalid_argument("render size must be between 1x1 and 16384x16384, got " + std::to_string(width) +
-                                "x" + std::to_string(height));
+    throw std::invalid_argument("render size must be between 1x1 and 16384x16384, got " + std::to_string(width) + "x" +
+                                std::to_string(height));
 }
 }  // namespace
 
 GlContext::GlContext(int width, int height, int samples) : requested_samples_(samples) {
   check_size(width, height);
-  const int attribs[] = {OSMESA_FORMAT,        OSMESA_RGBA,       OSMESA_DEPTH_BITS,           24,
-                         OSMESA_STENCIL_BITS,  8,                 OSMESA_PROFILE,              OSMESA_COMPAT_PROFILE,
-                         OSMESA_CONTEXT_MAJOR_VERSION, 2,         OSMESA_CONTEXT_MINOR_VERSION, 1,
+  const int attribs[] = {OSMESA_FORMAT,
+                         OSMESA_RGBA,
+                         OSMESA_DEPTH_BITS,
+                         24,
+                         OSMESA_STENCIL_BITS,
+                         8,
+                         OSMESA_PROFILE,
+                         OSMESA_COMPAT_PROFILE,
+                         OSMESA_CONTEXT_MAJOR_VERSION,
+                         2,
+                         OSMESA_CONTEXT_MINOR_VERSION,
+                         1,
                          0};
   ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
   if (!ctx_) throw std::runtime_error("OSMesa could not create an OpenGL context (is libosmesa6 installed?)");

@@ -18,8 +18,8 @@ uint8_t mix(uint8_t dst, uint8_t src, double a) {
 
 Image::Image(int width, int height, Rgb fill) : width_(width), height_(height) {
   if (width <= 0 || height <= 0 || static_cast<int64_t>(width) * height > (int64_t{1} << 28))
-    throw std::invalid_argument("image size must be positive and at most 2^28 pixels, got " +
-                                std::to_string(width) + "x" + std::to_string(height));
+    throw std::invalid_argument("image size must be positive and at most 2^28 pixels, got " + std::to_string(width) +
+                                "x" + std::to_string(height));
   data_.resize(static_cast<size_t>(width) * height * 3);
   for (size_t i = 0; i < data_.size(); i += 3) {
     data_[i] = fill.r;
@@ -62,8 +62,7 @@ void Image::fill_rect(int x, int y, int w, int h, Rgb c, double a) {
   std::array<std::array<uint8_t, 256>, 3> to{};
   const uint8_t src[3] = {c.r, c.g, c.b};
   for (int ch = 0; ch < 3; ++ch)
-    for (int v = 0; v < 256; ++v)
-      to[ch][v] = a >= 1.0 ? src[ch] : mix(static_cast<uint8_t>(v), src[ch], a);
+    for (int v = 0; v < 256; ++v) to[ch][v] = a >= 1.0 ? src[ch] : mix(static_cast<uint8_t>(v), src[ch], a);
   for (int yy = y0; yy < y1; ++yy) {
     uint8_t* p = row(yy) + 3 * x0;
     for (int xx = x0; xx < x1; ++xx, p += 3) {

@@ -22,17 +22,18 @@ uint32_t add_vertex(Mesh& m, double x, double y, double z, double nx, double ny,
 }  // namespace
 
 Mesh make_icosphere(int level) {
-  if (level < 0 || level > 6) throw std::invalid_argument("make_icosphere: level must be in [0, 6], got " + std::to_string(level));
+  if (level < 0 || level > 6)
+    throw std::invalid_argument("make_icosphere: level must be in [0, 6], got " + std::to_string(level));
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   Mesh m;
-  const double v[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  const double v[12][3] = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for (const auto& p : v) {
     const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     add_vertex(m, p[0] / n, p[1] / n, p[2] / n, p[0] / n, p[1] / n, p[2] / n);
   }
-  m.indices = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
-               3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+  m.indices = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,  11, 10, 2,  10, 7, 6, 7, 1, 8,
+               3, 9,  4, 3, 4, 2, 3, 2, 6, 3, 6, 8,  3, 8,  9,  4, 9, 5, 2, 4,  11, 6,  2,  10, 8,  6, 7, 9, 8, 1};
   for (int l = 0; l < level; ++l) {
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
     auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -122,8 +123,8 @@ GpuMesh::GpuMesh(const Mesh& m) : vertices_(m.num_vertices()), count_(m.indices.
                GL_STATIC_DRAW);
   glGenBuffers(1, &ibo_);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.indices.size() * sizeof(uint32_t)),
-               m.indices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.indices.size() * sizeof(uint32_t)), m.indices.data(),
+               GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }

@@ -8,9 +8,9 @@
 namespace robozoo::render {
 
 struct Mesh {
-  std::vector<float> positions;  ///< x, y, z per vertex
-  std::vector<float> normals;    ///< unit normal per vertex
-  std::vector<uint32_t> indices; ///< three per triangle, counter-clockwise seen from outside
+  std::vector<float> positions;   ///< x, y, z per vertex
+  std::vector<float> normals;     ///< unit normal per vertex
+  std::vector<uint32_t> indices;  ///< three per triangle, counter-clockwise seen from outside
   size_t num_vertices() const { return positions.size() / 3; }
   size_t num_triangles() const { return indices.size() / 3; }
 };

@@ -65,8 +65,8 @@ std::u32string decode_utf8(const std::string& s) {
 
 struct Font::Glyph {
   int width = 0, rows = 0, left = 0, top = 0, advance = 0;  // pixels
-  unsigned int index = 0;                                    // FreeType glyph index
-  std::vector<uint8_t> coverage;                             // rows * width
+  unsigned int index = 0;                                   // FreeType glyph index
+  std::vector<uint8_t> coverage;                            // rows * width
 };
 
 struct Font::Impl {
@@ -155,7 +155,8 @@ int Font::draw(Image& image, int x, int baseline, const std::string& utf8, Rgb c
 }
 
 Fonts Fonts::load(int pixel_size, const std::string& dir) {
-  return Fonts{Font(font_path("DejaVuSans.ttf", dir), pixel_size), Font(font_path("DejaVuSans-Bold.ttf", dir), pixel_size)};
+  return Fonts{Font(font_path("DejaVuSans.ttf", dir), pixel_size),
+               Font(font_path("DejaVuSans-Bold.ttf", dir), pixel_size)};
 }
 
 }  // namespace robozoo::render

@@ -25,9 +25,9 @@ class Font {
   Font& operator=(Font&&) noexcept;
 
   int pixel_size() const { return size_; }
-  int ascender() const;    ///< pixels above the baseline
-  int descender() const;   ///< pixels below the baseline (positive)
-  int line_height() const; ///< baseline to baseline (pixels)
+  int ascender() const;     ///< pixels above the baseline
+  int descender() const;    ///< pixels below the baseline (positive)
+  int line_height() const;  ///< baseline to baseline (pixels)
   /// Advance width of a UTF-8 string (pixels).
   int measure(const std::string& utf8);
   /// Draws a UTF-8 string with its baseline starting at (x, baseline);

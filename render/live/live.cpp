@@ -122,13 +122,14 @@ LiveSummary run_live(const LiveOptions& o, const std::function<bool()>& should_s
       ++runs_seen;
     }
     if (st.rejected() > rejected_seen) {
-      say("skipped " + std::to_string(st.rejected() - rejected_seen) + " message(s): " +
-          (st.problems.empty() ? std::string("?") : st.problems.back()) + " (" + std::to_string(st.undecodable) +
-          " undecodable, " + std::to_string(st.inconsistent) + " inconsistent, " + std::to_string(st.orphans) +
-          " orphaned so far)");
+      say("skipped " + std::to_string(st.rejected() - rejected_seen) +
+          " message(s): " + (st.problems.empty() ? std::string("?") : st.problems.back()) + " (" +
+          std::to_string(st.undecodable) + " undecodable, " + std::to_string(st.inconsistent) + " inconsistent, " +
+          std::to_string(st.orphans) + " orphaned so far)");
       rejected_seen = st.rejected();
     }
-    const double quiet = std::chrono::duration<double>(Clock::now() - (sub.any_message ? sub.last_message : started)).count();
+    const double quiet =
+        std::chrono::duration<double>(Clock::now() - (sub.any_message ? sub.last_message : started)).count();
     if (collector.has_open_stream() && quiet > o.stream_timeout) collector.close_open_streams();
     if (o.idle_exit > 0 && !collector.runs().empty() && quiet > o.idle_exit) {
       say("no message for " + std::to_string(static_cast<int>(o.idle_exit)) + " s: finishing");

@@ -21,12 +21,12 @@
 namespace robozoo::render {
 
 struct LiveOptions {
-  std::string url;               ///< LCM URL
-  std::string out_dir;           ///< where latest.png and the videos go (created if missing)
-  double stream_timeout = 3.0;   ///< bus silence that completes an open pose stream (s)
-  double idle_exit = 0.0;        ///< exit after this long without a message once a run was seen (s); 0: never
-  ZooOptions picture;            ///< latest.png (cell size, fonts)
-  VideoOptions video;            ///< the videos
+  std::string url;              ///< LCM URL
+  std::string out_dir;          ///< where latest.png and the videos go (created if missing)
+  double stream_timeout = 3.0;  ///< bus silence that completes an open pose stream (s)
+  double idle_exit = 0.0;       ///< exit after this long without a message once a run was seen (s); 0: never
+  ZooOptions picture;           ///< latest.png (cell size, fonts)
+  VideoOptions video;           ///< the videos
 };
 
 struct LiveSummary {

@@ -103,7 +103,8 @@ bool draw_target_pointer(Image& frame, Font& font, const Eigen::Vector3d& projec
     }
   // The label beside the arrow, towards the frame's inside.
   const int tw = font.measure(label);
-  const Eigen::Vector2d at = tip - d * (size * 1.2 + 0.5 * tw * std::abs(d.x()) + 0.6 * font.line_height() * std::abs(d.y()));
+  const Eigen::Vector2d at =
+      tip - d * (size * 1.2 + 0.5 * tw * std::abs(d.x()) + 0.6 * font.line_height() * std::abs(d.y()));
   const int lx = static_cast<int>(std::lround(at.x() - tw / 2.0));
   const int ly = static_cast<int>(std::lround(at.y() + font.ascender() / 2.0));
   frame.fill_rect(lx - 4, ly - font.ascender() - 2, tw + 8, font.line_height() + 2, kPanel, 0.5);

@@ -12,12 +12,12 @@ namespace robozoo::render {
 
 struct RobotCard {
   std::string run_id;
-  int regime = 0;          ///< run_t.regime: 0 feed-forward, 1 recurrent
+  int regime = 0;  ///< run_t.regime: 0 feed-forward, 1 recurrent
   int32_t generation = 0;
   int64_t genome_id = 0;
-  double fitness = 0.0;    ///< f = r + d
-  double r_term = 0.0;     ///< (points)
-  double d_term = 0.0;     ///< (m)
+  double fitness = 0.0;  ///< f = r + d
+  double r_term = 0.0;   ///< (points)
+  double d_term = 0.0;   ///< (m)
   RobotShape shape;
 };
 

@@ -24,7 +24,8 @@ RobotShape shape_from_morphology(const morphology_t& m) {
   for (const sphere_t& sp : m.spheres) {
     s.radius.push_back(sp.radius);
     s.start.emplace_back(sp.center[0], sp.center[1], sp.center[2]);
-    s.mass.push_back(std::max(sp.density, 0.0) * 4.0 / 3.0 * 3.14159265358979323846 * sp.radius * sp.radius * sp.radius);
+    s.mass.push_back(std::max(sp.density, 0.0) * 4.0 / 3.0 * 3.14159265358979323846 * sp.radius * sp.radius *
+                     sp.radius);
   }
   return s;
 }

@@ -15,10 +15,10 @@
 namespace robozoo::render {
 
 struct RobotShape {
-  std::vector<double> radius;  ///< per sphere (m)
-  std::vector<bool> leaf;      ///< per sphere
+  std::vector<double> radius;          ///< per sphere (m)
+  std::vector<bool> leaf;              ///< per sphere
   std::vector<Eigen::Vector3d> start;  ///< starting centres (m), after growth's vertical shift
-  std::vector<double> mass;    ///< per sphere: density x volume (kg)
+  std::vector<double> mass;            ///< per sphere: density x volume (kg)
   size_t size() const { return radius.size(); }
   /// Centre of mass of the spheres at these centres (m): where the fitness's
   /// distances are measured from, up to how the simulator sums overlapping spheres.

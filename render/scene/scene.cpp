@@ -156,7 +156,8 @@ size_t draw_ground(GroundProgram& program, const LightingUniforms& lu, bool grid
   const Eigen::Vector3f lit = rgbf(st.ground).cwiseProduct(lu.up_facing_light()).cwiseMin(1.0f);
   glColor3f(lit.x(), lit.y(), lit.z());
   glBegin(GL_QUADS);
-  for (const auto& c : {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1), Eigen::Vector2d(1, 1), Eigen::Vector2d(-1, 1)}) {
+  for (const auto& c :
+       {Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1), Eigen::Vector2d(1, 1), Eigen::Vector2d(-1, 1)}) {
     const double x = cx + c.x() * half, y = cy + c.y() * half;
     glTexCoord2d(x * tex_scale, y * tex_scale);
     glVertex3d(x, y, 0);
@@ -224,7 +225,8 @@ void draw_outlines(const std::vector<SphereDraw>& spheres, const Camera& camera,
     const double rho = s.radius * std::sqrt(1.0 - (s.radius * s.radius) / (d * d));
     const Eigen::Vector3d c = s.center + u * (s.radius * s.radius / d + 0.004 * d);
     const Rgb base = s.leaf ? st.leaf : st.inner;
-    glColor4f(static_cast<float>(base.r / 255.0 * st.outline_shade), static_cast<float>(base.g / 255.0 * st.outline_shade),
+    glColor4f(static_cast<float>(base.r / 255.0 * st.outline_shade),
+              static_cast<float>(base.g / 255.0 * st.outline_shade),
               static_cast<float>(base.b / 255.0 * st.outline_shade), 1.0f);
     const double px = s.radius * focal_px / d;
     const int segments = std::clamp(static_cast<int>(px * 0.5), 12, 96);

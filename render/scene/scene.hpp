@@ -14,22 +14,22 @@
 namespace robozoo::render {
 
 struct SceneStyle {
-  Rgb leaf{214, 44, 36};          ///< leaf spheres (no children)
-  Rgb inner{40, 88, 204};         ///< every other sphere
-  Rgb ground{206, 204, 198};      ///< ground colour under the grid
-  Rgb sky_top{150, 180, 215};     ///< top of the background gradient
-  Rgb horizon{232, 236, 240};     ///< bottom of the gradient, and the fog colour
-  Rgb target{240, 176, 32};       ///< target marker
-  double grid_spacing = 0.5;      ///< distance between grid lines (m); every other line is darker
-  double shadow_opacity = 0.32;   ///< darkness of shadows (0-1)
+  Rgb leaf{214, 44, 36};                         ///< leaf spheres (no children)
+  Rgb inner{40, 88, 204};                        ///< every other sphere
+  Rgb ground{206, 204, 198};                     ///< ground colour under the grid
+  Rgb sky_top{150, 180, 215};                    ///< top of the background gradient
+  Rgb horizon{232, 236, 240};                    ///< bottom of the gradient, and the fog colour
+  Rgb target{240, 176, 32};                      ///< target marker
+  double grid_spacing = 0.5;                     ///< distance between grid lines (m); every other line is darker
+  double shadow_opacity = 0.32;                  ///< darkness of shadows (0-1)
   Eigen::Vector3d key_light{-0.35, -0.55, 1.0};  ///< direction towards the key light (world); also casts shadows
   Eigen::Vector3d fill_light{0.6, 0.4, 0.35};    ///< direction towards the fill light (world)
-  double target_height = 1.0;     ///< height of the target's pole (m)
-  double fog_start = 3.0;         ///< fog starts at this many camera distances
-  double fog_end = 9.0;           ///< and is complete at this many
-  double outline_width = 1.4;     ///< anti-aliased outline on each sphere's silhouette (px at 720 lines;
-                                  ///< scaled with the image height); 0: none
-  double outline_shade = 0.55;    ///< outline colour = the sphere's colour times this
+  double target_height = 1.0;                    ///< height of the target's pole (m)
+  double fog_start = 3.0;                        ///< fog starts at this many camera distances
+  double fog_end = 9.0;                          ///< and is complete at this many
+  double outline_width = 1.4;                    ///< anti-aliased outline on each sphere's silhouette (px at 720 lines;
+                                                 ///< scaled with the image height); 0: none
+  double outline_shade = 0.55;                   ///< outline colour = the sphere's colour times this
 };
 
 struct SphereDraw {
@@ -40,11 +40,11 @@ struct SphereDraw {
 
 struct SceneView {
   std::vector<SphereDraw> spheres;
-  bool grid = true;                 ///< grid lines on the ground
+  bool grid = true;  ///< grid lines on the ground
   bool shadows = true;
-  bool outlines = true;             ///< smooth silhouettes (cheap anti-aliasing without multisampling)
+  bool outlines = true;  ///< smooth silhouettes (cheap anti-aliasing without multisampling)
   bool show_target = false;
-  Eigen::Vector3d target{50, 0, 0}; ///< target position (m)
+  Eigen::Vector3d target{50, 0, 0};  ///< target position (m)
 };
 
 class SceneRenderer {

@@ -168,32 +168,34 @@ BenchFigures run_bench(const BenchOptions& o) {
 void print(std::ostream& out, const BenchFigures& f) {
   char buf[1536];
   const double n = f.video_frames > 0 ? f.video_frames : 1;
-  std::snprintf(buf, sizeof buf,
-                "renderer         %s\n"
-                "size             %dx%d, %d samples per pixel, robot of %d spheres\n"
-                "drawing          %.1f frames/s (scene + read-back), %.1f ms of CPU a frame; "
-                "%.1f ms with the background drawn first (before), %d of %d frames differing\n"
-                "overlay          %.1f frames/s (text and panels alone)\n"
-                "encoding         %.1f frames/s (yuv420p + H.264 + MP4), %.1f ms of CPU a frame: "
-                "%.1f s for the whole video on the encoding thread alone\n"
-                "champion video   %d frames, %d steps = %.1f s simulated, made in %.1f s wall: %.2fx real time%s\n"
-                "                 CPU %.1f s (%.1f ms a frame), %.2f of %d cores busy\n"
-                "baseline         the same video drawn and encoded in turn: %.1f s wall, CPU %.1f s "
-                "(%.2f cores busy); side by side is %.2fx faster\n",
-                f.renderer.c_str(), f.width, f.height, f.samples, f.spheres, f.draw_fps, f.draw_cpu_ms,
-                f.draw_cpu_ms_before, f.frames_differing, f.drawn_frames, f.overlay_fps, f.encode_fps, f.encode_cpu_ms,
-                f.video_frames / (f.encode_fps > 0 ? f.encode_fps : 1.0), f.video_frames, f.video_steps, f.video_sim_seconds,
-                f.video_wall_seconds, f.video_wall_seconds > 0 ? f.video_sim_seconds / f.video_wall_seconds : 0.0,
-                f.resimulated ? " (re-simulated)" : "", f.video_cpu_seconds, 1e3 * f.video_cpu_seconds / n,
-                f.video_wall_seconds > 0 ? f.video_cpu_seconds / f.video_wall_seconds : 0.0, f.cores,
-                f.serial_wall_seconds, f.serial_cpu_seconds,
-                f.serial_wall_seconds > 0 ? f.serial_cpu_seconds / f.serial_wall_seconds : 0.0,
-                f.video_wall_seconds > 0 ? f.serial_wall_seconds / f.video_wall_seconds : 0.0);
+  std::snprintf(
+      buf, sizeof buf,
+      "renderer         %s\n"
+      "size             %dx%d, %d samples per pixel, robot of %d spheres\n"
+      "drawing          %.1f frames/s (scene + read-back), %.1f ms of CPU a frame; "
+      "%.1f ms with the background drawn first (before), %d of %d frames differing\n"
+      "overlay          %.1f frames/s (text and panels alone)\n"
+      "encoding         %.1f frames/s (yuv420p + H.264 + MP4), %.1f ms of CPU a frame: "
+      "%.1f s for the whole video on the encoding thread alone\n"
+      "champion video   %d frames, %d steps = %.1f s simulated, made in %.1f s wall: %.2fx real time%s\n"
+      "                 CPU %.1f s (%.1f ms a frame), %.2f of %d cores busy\n"
+      "baseline         the same video drawn and encoded in turn: %.1f s wall, CPU %.1f s "
+      "(%.2f cores busy); side by side is %.2fx faster\n",
+      f.renderer.c_str(), f.width, f.height, f.samples, f.spheres, f.draw_fps, f.draw_cpu_ms, f.draw_cpu_ms_before,
+      f.frames_differing, f.drawn_frames, f.overlay_fps, f.encode_fps, f.encode_cpu_ms,
+      f.video_frames / (f.encode_fps > 0 ? f.encode_fps : 1.0), f.video_frames, f.video_steps, f.video_sim_seconds,
+      f.video_wall_seconds, f.video_wall_seconds > 0 ? f.video_sim_seconds / f.video_wall_seconds : 0.0,
+      f.resimulated ? " (re-simulated)" : "", f.video_cpu_seconds, 1e3 * f.video_cpu_seconds / n,
+      f.video_wall_seconds > 0 ? f.video_cpu_seconds / f.video_wall_seconds : 0.0, f.cores, f.serial_wall_seconds,
+      f.serial_cpu_seconds, f.serial_wall_seconds > 0 ? f.serial_cpu_seconds / f.serial_wall_seconds : 0.0,
+      f.video_wall_seconds > 0 ? f.serial_wall_seconds / f.video_wall_seconds : 0.0);
   out << buf;
   const BenchFigures::Encoding& g = f.given;
   const BenchFigures::Encoding& q = f.fast;
   auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
-  auto threads = [](int t) { return t == 0 ? std::string("libx264's choice of threads") : std::to_string(t) + " thread" + (t == 1 ? "" : "s"); };
+  auto threads = [](int t) {
+    return t == 0 ? std::string("libx264's choice of threads") : std::to_string(t) + " thread" + (t == 1 ? "" : "s");
+  };
   std::snprintf(buf, sizeof buf,
                 "encoders         the %d timed frames encoded both ways, in turn:\n"
                 "  default        %s, %s: %.2f s wall, %.1f ms of CPU a frame, %lld bytes, "
@@ -203,10 +205,9 @@ void print(std::ostream& out, const BenchFigures& f) {
                 "  fast/default   wall %.2fx, CPU %.2fx, size %.2fx, PSNR %+.2f dB, SSIM %+.4f\n"
                 "fast video       the champion video with --fast side by side: %.1f s wall (default %.1f s: %.2fx), "
                 "CPU %.1f s (%.1f ms a frame; default %.1f ms), %lld bytes (default %lld: %.2fx)\n",
-                f.encoded_frames,
-                g.preset.c_str(), threads(g.threads).c_str(), g.wall_seconds, g.cpu_ms, g.bytes, g.psnr, g.psnr_y,
-                g.ssim_y, q.preset.c_str(), threads(q.threads).c_str(), q.wall_seconds, q.cpu_ms, q.bytes, q.psnr,
-                q.psnr_y, q.ssim_y, ratio(q.wall_seconds, g.wall_seconds), ratio(q.cpu_ms, g.cpu_ms),
+                f.encoded_frames, g.preset.c_str(), threads(g.threads).c_str(), g.wall_seconds, g.cpu_ms, g.bytes,
+                g.psnr, g.psnr_y, g.ssim_y, q.preset.c_str(), threads(q.threads).c_str(), q.wall_seconds, q.cpu_ms,
+                q.bytes, q.psnr, q.psnr_y, q.ssim_y, ratio(q.wall_seconds, g.wall_seconds), ratio(q.cpu_ms, g.cpu_ms),
                 ratio(static_cast<double>(q.bytes), static_cast<double>(g.bytes)), q.psnr - g.psnr, q.ssim_y - g.ssim_y,
                 f.fast_video_wall_seconds, f.video_wall_seconds, ratio(f.fast_video_wall_seconds, f.video_wall_seconds),
                 f.fast_video_cpu_seconds, 1e3 * f.fast_video_cpu_seconds / n, 1e3 * f.video_cpu_seconds / n,

@@ -7,7 +7,8 @@
 namespace robozoo::render {
 
 FrameQueue::FrameQueue(int capacity) : capacity_(capacity > 0 ? static_cast<size_t>(capacity) : 0) {
-  if (capacity < 1) throw std::invalid_argument("frame queue capacity must be at least 1, got " + std::to_string(capacity));
+  if (capacity < 1)
+    throw std::invalid_argument("frame queue capacity must be at least 1, got " + std::to_string(capacity));
 }
 
 Image FrameQueue::spare() {

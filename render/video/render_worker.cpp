@@ -82,8 +82,9 @@ void RenderWorker::run() {
     std::string line;
     bool ok = true;
     try {
-      if (!stage) stage = std::make_unique<Stage>(picture_options_.cell_width, picture_options_.cell_height,
-                                                  picture_options_.samples);
+      if (!stage)
+        stage = std::make_unique<Stage>(picture_options_.cell_width, picture_options_.cell_height,
+                                        picture_options_.samples);
       if (job.is_video) {
         const VideoStats s = render_video(job.subject, video_options_, job.path, {}, stage.get());
         char buf[160];

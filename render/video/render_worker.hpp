@@ -17,10 +17,10 @@
 namespace robozoo::render {
 
 struct WorkerCounts {
-  int64_t pictures = 0;   ///< PNGs written (count)
-  int64_t videos = 0;     ///< videos written (count)
-  int64_t failures = 0;   ///< jobs that failed (count)
-  int64_t superseded = 0; ///< pictures replaced by a newer one before being drawn (count)
+  int64_t pictures = 0;    ///< PNGs written (count)
+  int64_t videos = 0;      ///< videos written (count)
+  int64_t failures = 0;    ///< jobs that failed (count)
+  int64_t superseded = 0;  ///< pictures replaced by a newer one before being drawn (count)
 };
 
 class RenderWorker {

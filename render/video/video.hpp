@@ -19,19 +19,19 @@
 namespace robozoo::render {
 
 struct VideoOptions {
-  EncoderOptions encoder;          ///< size (even), fps, crf, preset, threads
-  double speed = 1.0;              ///< simulated seconds per second of video (1: real time)
-  double hold = 0.0;               ///< the last frame is shown this much longer (s)
-  int samples = 0;                 ///< multisampling (samples per pixel): llvmpipe's 4x costs ~3x the
-                                   ///< drawing time; the outlines already smooth the silhouettes
-  bool overlay = true;             ///< run, generation, fitness and time over the picture
-  bool grid = true;                ///< grid lines on the ground
+  EncoderOptions encoder;                 ///< size (even), fps, crf, preset, threads
+  double speed = 1.0;                     ///< simulated seconds per second of video (1: real time)
+  double hold = 0.0;                      ///< the last frame is shown this much longer (s)
+  int samples = 0;                        ///< multisampling (samples per pixel): llvmpipe's 4x costs ~3x the
+                                          ///< drawing time; the outlines already smooth the silhouettes
+  bool overlay = true;                    ///< run, generation, fitness and time over the picture
+  bool grid = true;                       ///< grid lines on the ground
   ViewAngles angles{-105.0, 22.0, 30.0};  ///< the camera's direction: from the side, a little behind, so
-                                         ///< a robot heading for the target (+x) moves to the right
-  double zoom_out = 1.7;           ///< camera distance over the one that just frames the starting pose
-  double follow_smoothing = 0.8;   ///< follow camera's time constant (simulated s)
-  int font_size = 0;               ///< overlay text size (px); 0: height / 32
-  std::string font_dir;            ///< DejaVu fonts; empty: the system's
+                                          ///< a robot heading for the target (+x) moves to the right
+  double zoom_out = 1.7;                  ///< camera distance over the one that just frames the starting pose
+  double follow_smoothing = 0.8;          ///< follow camera's time constant (simulated s)
+  int font_size = 0;                      ///< overlay text size (px); 0: height / 32
+  std::string font_dir;                   ///< DejaVu fonts; empty: the system's
 };
 
 /// Throws std::invalid_argument for bad options (odd sizes, speed <= 0...).
@@ -49,10 +49,10 @@ int video_frame_count(double duration, const VideoOptions& o);
 
 struct VideoStats {
   int frames = 0;
-  double draw_seconds = 0;    ///< drawing and reading back frames (s, wall, drawing thread)
-  double overlay_seconds = 0; ///< text and panels (s, wall, drawing thread)
-  double encode_seconds = 0;  ///< colour conversion, encoding and writing (s, wall, encoding thread)
-  double total_seconds = 0;   ///< (s, wall): less than the sum, as drawing and encoding overlap
+  double draw_seconds = 0;     ///< drawing and reading back frames (s, wall, drawing thread)
+  double overlay_seconds = 0;  ///< text and panels (s, wall, drawing thread)
+  double encode_seconds = 0;   ///< colour conversion, encoding and writing (s, wall, encoding thread)
+  double total_seconds = 0;    ///< (s, wall): less than the sum, as drawing and encoding overlap
 };
 
 /// Renders and encodes the video to `path`: the calling thread draws (with
@@ -79,7 +79,7 @@ class VideoFrames {
   std::unique_ptr<FollowCamera> follow_;
   std::unique_ptr<Fonts> fonts_;
   std::unique_ptr<Font> legend_font_;
-  double z_;                 // height the camera aims at (m)
+  double z_;  // height the camera aims at (m)
   int count_ = 0, index_ = 0;
 };
 

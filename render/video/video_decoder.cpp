@@ -25,7 +25,8 @@ struct VideoDecoder::Context {
 
 VideoDecoder::VideoDecoder(const std::string& path) : c_(std::make_unique<Context>()), path_(path) {
   if (!c_->pkt || !c_->frame) throw std::runtime_error("libav: out of memory");
-  if (avformat_open_input(&c_->fmt, path.c_str(), nullptr, nullptr) < 0) throw std::runtime_error(path + ": cannot open");
+  if (avformat_open_input(&c_->fmt, path.c_str(), nullptr, nullptr) < 0)
+    throw std::runtime_error(path + ": cannot open");
   if (avformat_find_stream_info(c_->fmt, nullptr) < 0 || c_->fmt->nb_streams != 1)
     throw std::runtime_error(path + ": not a video of one stream");
   const AVStream* st = c_->fmt->streams[0];

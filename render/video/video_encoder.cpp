@@ -159,7 +159,8 @@ void VideoEncoder::add_frame(const Image& image) {
   if (m.finished) throw std::logic_error("VideoEncoder::add_frame after finish");
   if (image.width() != m.codec->width || image.height() != m.codec->height)
     throw std::invalid_argument("frame is " + std::to_string(image.width()) + "x" + std::to_string(image.height()) +
-                                ", the video " + std::to_string(m.codec->width) + "x" + std::to_string(m.codec->height));
+                                ", the video " + std::to_string(m.codec->width) + "x" +
+                                std::to_string(m.codec->height));
   const int r = av_frame_make_writable(m.frame);
   if (r < 0) throw std::runtime_error("libav: " + av_error(r));
   const uint8_t* src[1] = {image.bytes().data()};

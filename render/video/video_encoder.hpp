@@ -10,14 +10,14 @@
 namespace robozoo::render {
 
 struct EncoderOptions {
-  int width = 1280;                ///< (px, even)
-  int height = 720;                ///< (px, even)
-  int fps = 25;                    ///< frames per second
-  int crf = 23;                    ///< x264 constant rate factor (0-51, lower is better)
-  std::string preset = "veryfast"; ///< x264 preset
-  int threads = 1;                 ///< encoder threads; 0: libx264's choice, by the machine's cores
-                                   ///< (its output depends on the thread count: 1 gives the same
-                                   ///< bytes on every machine, and videos overlap drawing anyway)
+  int width = 1280;                 ///< (px, even)
+  int height = 720;                 ///< (px, even)
+  int fps = 25;                     ///< frames per second
+  int crf = 23;                     ///< x264 constant rate factor (0-51, lower is better)
+  std::string preset = "veryfast";  ///< x264 preset
+  int threads = 1;                  ///< encoder threads; 0: libx264's choice, by the machine's cores
+                                    ///< (its output depends on the thread count: 1 gives the same
+                                    ///< bytes on every machine, and videos overlap drawing anyway)
 };
 
 /// Throws std::invalid_argument for odd or out-of-range sizes, a bad fps or crf.

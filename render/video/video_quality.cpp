@@ -100,22 +100,22 @@ VideoQuality measure_quality(const std::string& path, const std::vector<Image>& 
   double se[3] = {0, 0, 0}, ssim = 0;
   long windows = 0;
   video.decode([&](const AVFrame& frame) {
-      const Image& img = sources[static_cast<size_t>(q.frames) % sources.size()];
-      const uint8_t* src[1] = {img.bytes().data()};
-      const int stride[1] = {3 * w};
-      sws_scale(sws, src, stride, 0, h, source->data, source->linesize);
-      for (int p = 0; p < 3; ++p) {
-        const int pw = p == 0 ? w : w / 2, ph = p == 0 ? h : h / 2;
-        const Plane a = copy_plane(frame.data[p], frame.linesize[p], pw, ph);
-        const Plane b = copy_plane(source->data[p], source->linesize[p], pw, ph);
-        se[p] += squared_error(a, b);
-        if (p == 0) {
-          const auto [s, n] = ssim_sum(a, b);
-          ssim += s;
-          windows += n;
-        }
+    const Image& img = sources[static_cast<size_t>(q.frames) % sources.size()];
+    const uint8_t* src[1] = {img.bytes().data()};
+    const int stride[1] = {3 * w};
+    sws_scale(sws, src, stride, 0, h, source->data, source->linesize);
+    for (int p = 0; p < 3; ++p) {
+      const int pw = p == 0 ? w : w / 2, ph = p == 0 ? h : h / 2;
+      const Plane a = copy_plane(frame.data[p], frame.linesize[p], pw, ph);
+      const Plane b = copy_plane(source->data[p], source->linesize[p], pw, ph);
+      se[p] += squared_error(a, b);
+      if (p == 0) {
+        const auto [s, n] = ssim_sum(a, b);
+        ssim += s;
+        windows += n;
       }
-      ++q.frames;
+    }
+    ++q.frames;
   });
   if (q.frames == 0) throw std::runtime_error(path + ": no frame decoded");
   const double luma = static_cast<double>(w) * h * q.frames, chroma = luma / 4;

@@ -11,10 +11,10 @@
 namespace robozoo::render {
 
 struct VideoQuality {
-  int frames = 0;       ///< frames decoded and compared (count)
-  double psnr_y = 0;    ///< PSNR of the luma plane over all frames (dB; infinity when identical)
-  double psnr = 0;      ///< PSNR of all three planes, luma weighted 4:1:1 as ffmpeg's psnr filter (dB)
-  double ssim_y = 0;    ///< mean SSIM of the luma plane, 8x8 windows every 4 pixels (1: identical)
+  int frames = 0;     ///< frames decoded and compared (count)
+  double psnr_y = 0;  ///< PSNR of the luma plane over all frames (dB; infinity when identical)
+  double psnr = 0;    ///< PSNR of all three planes, luma weighted 4:1:1 as ffmpeg's psnr filter (dB)
+  double ssim_y = 0;  ///< mean SSIM of the luma plane, 8x8 windows every 4 pixels (1: identical)
 };
 
 /// Decodes `path` and compares its frame i with `sources[i % sources.size()]`.

@@ -79,8 +79,8 @@ Image render_zoo(const std::vector<RobotCard>& cards, const ZooOptions& o) {
   validate(o);
   if (cards.empty()) throw std::invalid_argument("no robots to draw");
   const int n = static_cast<int>(cards.size());
-  const int columns = o.columns > 0 ? std::min(o.columns, n)
-                                    : std::min(n, static_cast<int>(std::ceil(std::sqrt(2.0 * n))));
+  const int columns =
+      o.columns > 0 ? std::min(o.columns, n) : std::min(n, static_cast<int>(std::ceil(std::sqrt(2.0 * n))));
   const int rows = (n + columns - 1) / columns;
   Fonts fonts = Fonts::load(o.font_size, o.font_dir);
   Fonts title_fonts = Fonts::load(o.font_size * 3 / 2, o.font_dir);

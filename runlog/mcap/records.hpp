@@ -82,10 +82,10 @@ struct MessageIndex {
 struct ChunkIndex {
   uint64_t message_start_time = 0;
   uint64_t message_end_time = 0;
-  uint64_t chunk_start_offset = 0;  ///< file offset of the chunk record's opcode
-  uint64_t chunk_length = 0;        ///< bytes of the whole chunk record
+  uint64_t chunk_start_offset = 0;                     ///< file offset of the chunk record's opcode
+  uint64_t chunk_length = 0;                           ///< bytes of the whole chunk record
   std::map<uint16_t, uint64_t> message_index_offsets;  ///< channel -> file offset of its message index
-  uint64_t message_index_length = 0;  ///< bytes of the message index records after the chunk
+  uint64_t message_index_length = 0;                   ///< bytes of the message index records after the chunk
   std::string compression;
   uint64_t compressed_size = 0;
   uint64_t uncompressed_size = 0;

@@ -21,7 +21,7 @@ namespace robozoo::mcap {
 
 struct WriterOptions {
   Compression compression = Compression::Zstd;
-  size_t chunk_bytes = 1 << 20;  ///< a chunk is closed once its uncompressed records reach this (bytes)
+  size_t chunk_bytes = 1 << 20;     ///< a chunk is closed once its uncompressed records reach this (bytes)
   std::string library = "robozoo";  ///< the header's library field
 };
 

@@ -20,24 +20,24 @@
 namespace robozoo {
 
 struct ChampionChangeParams {
-  TopologyOptions topology;         ///< what counts as the same topology
-  bool simulated_only = true;       ///< count only changes between two simulated champions
+  TopologyOptions topology;    ///< what counts as the same topology
+  bool simulated_only = true;  ///< count only changes between two simulated champions
 };
 
 struct ChampionChange {
-  int32_t generation = 0;          ///< generation of the new champion
-  int64_t previous_id = -1;        ///< genome id of generation - 1's champion
-  int64_t genome_id = -1;          ///< genome id of the new champion
-  double previous_fitness = 0;     ///< fitness units
-  double fitness = 0;              ///< fitness units
-  double improvement = 0;          ///< fitness - previous_fitness (fitness units, > 0)
-  bool topology_changed = false;   ///< the two sphere trees differ (topology.hpp)
+  int32_t generation = 0;         ///< generation of the new champion
+  int64_t previous_id = -1;       ///< genome id of generation - 1's champion
+  int64_t genome_id = -1;         ///< genome id of the new champion
+  double previous_fitness = 0;    ///< fitness units
+  double fitness = 0;             ///< fitness units
+  double improvement = 0;         ///< fitness - previous_fitness (fitness units, > 0)
+  bool topology_changed = false;  ///< the two sphere trees differ (topology.hpp)
 };
 
 struct ChampionChanges {
   std::vector<ChampionChange> changes;  ///< in generation order
-  int32_t not_simulated = 0;  ///< fitness gains left out because a champion was not simulated (count)
-  int32_t unknown = 0;        ///< fitness gains left out: a champion or its morphology missing from the log (count)
+  int32_t not_simulated = 0;            ///< fitness gains left out because a champion was not simulated (count)
+  int32_t unknown = 0;  ///< fitness gains left out: a champion or its morphology missing from the log (count)
 };
 
 /// The new champions of `run`.

@@ -14,10 +14,10 @@
 namespace robozoo {
 
 struct ChampionLogInfo {
-  int32_t generation = 0;   ///< generation the champion won in its run
+  int32_t generation = 0;  ///< generation the champion won in its run
   int64_t genome_id = -1;
-  double fitness = 0;       ///< committed fitness (fitness units)
-  size_t poses = 0;         ///< poses written (count)
+  double fitness = 0;  ///< committed fitness (fitness units)
+  size_t poses = 0;    ///< poses written (count)
 };
 
 /// Writes the log at `log_path`. Throws std::invalid_argument when the result

@@ -99,15 +99,14 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
         r.paper_significant = claim->significant;
         if (claim->significant && claim->run_samples && std::isfinite(claim->p_bound)) {
           r.paper_effect = smallest_effect_for_p(claim->p_bound, kPaperRunsPerRegime, kPaperRunsPerRegime);
-          r.power = t_test_power(r.paper_effect, static_cast<int>(c.control.n), static_cast<int>(c.experimental.n),
-                                 alpha);
+          r.power =
+              t_test_power(r.paper_effect, static_cast<int>(c.control.n), static_cast<int>(c.experimental.n), alpha);
         }
       }
       // The sign of the difference of the means (d's sign, also where d is undefined:
       // a sample of one, or two constant samples).
       const double diff = c.experimental.mean - c.control.mean;
-      if ((r.paper_direction == 1 || r.paper_direction == -1) && c.control.n > 0 && c.experimental.n > 0 &&
-          diff != 0)
+      if ((r.paper_direction == 1 || r.paper_direction == -1) && c.control.n > 0 && c.experimental.n > 0 && diff != 0)
         r.direction = (diff > 0) == (r.paper_direction > 0) ? "same as the paper" : "opposite to the paper";
       out.rows.push_back(r);
     }
@@ -145,8 +144,11 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
       else if (sig && r.direction == "opposite to the paper")
         r.verdict = "contradicts: significant" + which + ", the other way";
       else
-        r.verdict = "inconclusive: not significant" + which + (r.direction.empty() ? "" : ", the estimate points " +
-                    std::string(r.direction == "same as the paper" ? "the paper's way" : "the other way"));
+        r.verdict = "inconclusive: not significant" + which +
+                    (r.direction.empty()
+                         ? ""
+                         : ", the estimate points " +
+                               std::string(r.direction == "same as the paper" ? "the paper's way" : "the other way"));
     } else if (r.paper_direction == 0) {
       r.verdict = sig ? "differs: significant" + which + ", where the paper found no significant difference"
                       : "not significant" + which + ", as in the paper (not a proof of equality)";
@@ -160,8 +162,8 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
   for (auto& r : out.rows)
     if (r.role == ClaimRole::Primary && !std::isnan(r.comparison.welch.p) && !std::isnan(r.comparison.student.p) &&
         (r.comparison.welch.p < alpha) != (r.comparison.student.p < alpha))
-      r.verdict += std::string("; Welch's test ") + (r.comparison.welch.p < alpha ? "reaches" : "does not reach") +
-                   " α";
+      r.verdict +=
+          std::string("; Welch's test ") + (r.comparison.welch.p < alpha ? "reaches" : "does not reach") + " α";
 
   // The headline: the primary test.
   const ClaimRow* primary = nullptr;
@@ -180,22 +182,21 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
   }
   const Comparison& f = primary->comparison;
   const bool sig = f.student.p < alpha;
-  const std::string test = "Student's t(" + num(f.student.df, 0) + ") = " + num(f.student.t, 2) + ", " +
-                           p_text(f.student.p) + "; Welch's " + p_text(f.welch.p) +
-                           (!std::isnan(f.welch.p) && (f.welch.p < alpha) != sig
-                                ? std::string(" (Welch's test, without equal variances, ") +
-                                      (sig ? "does not reach" : "reaches") + " α)"
-                                : std::string()) +
-                           "; Cohen's d = " +
-                           num(f.effect.d, 2) + ", 95 % CI [" + num(f.effect.d_low, 2) + ", " +
-                           num(f.effect.d_high, 2) + "]";
+  const std::string test =
+      "Student's t(" + num(f.student.df, 0) + ") = " + num(f.student.t, 2) + ", " + p_text(f.student.p) + "; Welch's " +
+      p_text(f.welch.p) +
+      (!std::isnan(f.welch.p) && (f.welch.p < alpha) != sig
+           ? std::string(" (Welch's test, without equal variances, ") + (sig ? "does not reach" : "reaches") + " α)"
+           : std::string()) +
+      "; Cohen's d = " + num(f.effect.d, 2) + ", 95 % CI [" + num(f.effect.d_low, 2) + ", " + num(f.effect.d_high, 2) +
+      "]";
   if (out.paper_compared) {
     out.outcome = sig ? (primary->direction == "same as the paper" ? "reproduced" : "not reproduced") : "inconclusive";
     const std::string way = primary->direction == "same as the paper"       ? "the paper's way"
                             : primary->direction == "opposite to the paper" ? "the other way"
                                                                             : "neither way";
-    out.headline = "The paper's fitness result (recurrent CPPNs fitter) is **" + out.outcome + "** " + at + ": " +
-                   ctl + " " + num(f.control.mean, 2) + " ± " + num(f.control.se, 2) + ", " + exp + " " +
+    out.headline = "The paper's fitness result (recurrent CPPNs fitter) is **" + out.outcome + "** " + at + ": " + ctl +
+                   " " + num(f.control.mean, 2) + " ± " + num(f.control.se, 2) + ", " + exp + " " +
                    num(f.experimental.mean, 2) + " ± " + num(f.experimental.se, 2) + " (mean ± s.e.), " + test +
                    ", the estimate pointing " + way + (sig ? " significantly" : " without significance") +
                    "; the paper's p < 0.001 with 30 runs per regime implies |d| ≥ " + num(primary->paper_effect, 2) +
@@ -203,11 +204,12 @@ ClaimsAssessment assess_claims(const ExperimentAnalysis& a, double alpha) {
                    ", and the interval " + (excludes_paper_effect(*primary) ? "excludes" : "does not exclude") +
                    " d = " + num(primary->paper_direction * primary->paper_effect, 2) + ".";
   } else {
-    out.headline = "The paper did not compare " + ctl + " with " + exp + " CPPNs; the primary test, best-so-far "
-                   "fitness " + at + ", is " + (sig ? "significant" : "not significant") + " at α = " +
-                   num(alpha, 2) + ": " + ctl + " " + num(f.control.mean, 2) + " ± " + num(f.control.se, 2) + ", " +
-                   exp + " " + num(f.experimental.mean, 2) + " ± " + num(f.experimental.se, 2) + " (mean ± s.e.), " +
-                   test + ".";
+    out.headline = "The paper did not compare " + ctl + " with " + exp +
+                   " CPPNs; the primary test, best-so-far "
+                   "fitness " +
+                   at + ", is " + (sig ? "significant" : "not significant") + " at α = " + num(alpha, 2) + ": " + ctl +
+                   " " + num(f.control.mean, 2) + " ± " + num(f.control.se, 2) + ", " + exp + " " +
+                   num(f.experimental.mean, 2) + " ± " + num(f.experimental.se, 2) + " (mean ± s.e.), " + test + ".";
   }
   return out;
 }

@@ -28,19 +28,19 @@ enum class ClaimRole { Primary, Secondary, ByConstruction, Descriptive };
 
 struct ClaimRow {
   Comparison comparison;
-  std::string section;        ///< "Figure 1", "Figure 2", "Figure 3", "Section 4"
+  std::string section;  ///< "Figure 1", "Figure 2", "Figure 3", "Section 4"
   ClaimRole role = ClaimRole::Secondary;
-  std::string role_note;      ///< why a statistic is true by construction or descriptive
-  std::string paper;          ///< the paper's words, "silent", or "not compared by the paper"
+  std::string role_note;  ///< why a statistic is true by construction or descriptive
+  std::string paper;      ///< the paper's words, "silent", or "not compared by the paper"
   /// The paper's finding in this comparison's direction (experimental minus
   /// control): +1 higher, -1 lower, 0 no significant difference, 2 none.
   int paper_direction = 2;
   bool paper_significant = false;
-  double paper_effect = 0;    ///< |d| the paper's result implies (NaN: none)
-  double power = 0;           ///< Student's t-test's power at paper_effect (NaN: none)
-  double holm_p = 0;          ///< Holm-adjusted Student's p (secondary tests; NaN otherwise)
-  std::string direction;      ///< "same as the paper", "opposite to the paper", "" (no direction to compare)
-  std::string verdict;        ///< the row's conclusion, from the primary test or Holm's p
+  double paper_effect = 0;  ///< |d| the paper's result implies (NaN: none)
+  double power = 0;         ///< Student's t-test's power at paper_effect (NaN: none)
+  double holm_p = 0;        ///< Holm-adjusted Student's p (secondary tests; NaN otherwise)
+  std::string direction;    ///< "same as the paper", "opposite to the paper", "" (no direction to compare)
+  std::string verdict;      ///< the row's conclusion, from the primary test or Holm's p
 };
 
 struct ClaimsAssessment {

@@ -14,9 +14,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // P(T'(df, ncp) <= t): decreasing in ncp.
-double nct_cdf(double df, double ncp, double t) {
-  return boost::math::cdf(boost::math::non_central_t(df, ncp), t);
-}
+double nct_cdf(double df, double ncp, double t) { return boost::math::cdf(boost::math::non_central_t(df, ncp), t); }
 
 // The ncp with nct_cdf(df, ncp, t) = target, by bisection on a bracket that
 // grows until it holds the root (the cdf falls from 1 to 0 as ncp grows).

@@ -55,8 +55,7 @@ std::vector<Comparison> compare_all(const std::vector<Spec>& specs, const Experi
 }
 
 // Pooled over the new champions of every run of a regime.
-std::vector<double> pooled(const std::vector<RunAnalysis>& runs,
-                           const std::function<bool(const ChampionChange&)>& keep,
+std::vector<double> pooled(const std::vector<RunAnalysis>& runs, const std::function<bool(const ChampionChange&)>& keep,
                            const std::function<double(const ChampionChange&)>& value) {
   std::vector<double> v;
   for (const auto& r : runs)
@@ -115,34 +114,49 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::
       {"spheres", "spheres", "count", [](const RunAnalysis& r) { return r.morphology.spheres; }},
       {"leaves", "leaves", "count", [](const RunAnalysis& r) { return r.morphology.leaves; }},
       {"joints", "joints", "count", [](const RunAnalysis& r) { return r.morphology.joints; }},
-      {"distance_sensors", "distance sensors", "count", [](const RunAnalysis& r) { return r.morphology.distance_sensors; }},
+      {"distance_sensors", "distance sensors", "count",
+       [](const RunAnalysis& r) { return r.morphology.distance_sensors; }},
       {"touch_sensors", "touch sensors", "count", [](const RunAnalysis& r) { return r.morphology.touch_sensors; }},
       {"distance_per_sphere", "share of a robot's spheres with a distance sensor", "share",
-       [](const RunAnalysis& r) { return r.morphology.spheres > 0 ? r.morphology.distance_sensors / r.morphology.spheres : 0.0; }},
+       [](const RunAnalysis& r) {
+         return r.morphology.spheres > 0 ? r.morphology.distance_sensors / r.morphology.spheres : 0.0;
+       }},
       {"touch_per_sphere", "share of a robot's spheres with a touch sensor", "share",
-       [](const RunAnalysis& r) { return r.morphology.spheres > 0 ? r.morphology.touch_sensors / r.morphology.spheres : 0.0; }},
+       [](const RunAnalysis& r) {
+         return r.morphology.spheres > 0 ? r.morphology.touch_sensors / r.morphology.spheres : 0.0;
+       }},
       {"hit_max_spheres", "best-of-run robots that hit max_spheres (share)", "share",
        [](const RunAnalysis& r) { return r.max_spheres > 0 && r.morphology.spheres >= r.max_spheres ? 1.0 : 0.0; }},
-      {"proprio_sensors", "proprioceptive sensors", "count", [](const RunAnalysis& r) { return r.morphology.proprio_sensors; }},
+      {"proprio_sensors", "proprioceptive sensors", "count",
+       [](const RunAnalysis& r) { return r.morphology.proprio_sensors; }},
       {"time_sensors", "time sensors", "count", [](const RunAnalysis& r) { return r.morphology.time_sensors; }},
       {"mean_radius", "mean radius", "m", [](const RunAnalysis& r) { return r.morphology.mean_radius; }},
-      {"radius_variance", "radius variance within a robot", "m^2", [](const RunAnalysis& r) { return r.morphology.radius_variance; }},
-      {"max_depth", "maximum depth from the root", "count", [](const RunAnalysis& r) { return r.morphology.max_depth; }},
-      {"ground_spheres", "spheres that touched the ground", "count", [](const RunAnalysis& r) { return r.morphology.ground_spheres; }},
-      {"ground_fraction", "fraction of spheres that touched the ground", "share", [](const RunAnalysis& r) { return r.morphology.ground_fraction; }},
+      {"radius_variance", "radius variance within a robot", "m^2",
+       [](const RunAnalysis& r) { return r.morphology.radius_variance; }},
+      {"max_depth", "maximum depth from the root", "count",
+       [](const RunAnalysis& r) { return r.morphology.max_depth; }},
+      {"ground_spheres", "spheres that touched the ground", "count",
+       [](const RunAnalysis& r) { return r.morphology.ground_spheres; }},
+      {"ground_fraction", "fraction of spheres that touched the ground", "share",
+       [](const RunAnalysis& r) { return r.morphology.ground_fraction; }},
   };
   e.morphology = compare_all(morph, e, true);
 
   const std::vector<Spec> geno = {
       {"nodes", "nodes", "count", [](const RunAnalysis& r) { return r.genotype.nodes; }},
-      {"hidden_sigmoid", "hidden sigmoid nodes", "count", [](const RunAnalysis& r) { return r.genotype.hidden_sigmoid; }},
+      {"hidden_sigmoid", "hidden sigmoid nodes", "count",
+       [](const RunAnalysis& r) { return r.genotype.hidden_sigmoid; }},
       {"hidden_cosine", "hidden cosine nodes", "count", [](const RunAnalysis& r) { return r.genotype.hidden_cosine; }},
-      {"hidden_gaussian", "hidden Gaussian nodes", "count", [](const RunAnalysis& r) { return r.genotype.hidden_gaussian; }},
+      {"hidden_gaussian", "hidden Gaussian nodes", "count",
+       [](const RunAnalysis& r) { return r.genotype.hidden_gaussian; }},
       {"links", "links (enabled)", "count", [](const RunAnalysis& r) { return r.genotype.links; }},
-      {"forward_links", "forward links (position of source < target)", "count", [](const RunAnalysis& r) { return r.genotype.forward_links; }},
+      {"forward_links", "forward links (position of source < target)", "count",
+       [](const RunAnalysis& r) { return r.genotype.forward_links; }},
       {"hidden", "hidden nodes", "count", [](const RunAnalysis& r) { return r.genotype.hidden; }},
-      {"recurrent_links", "recurrent links (not forward)", "count", [](const RunAnalysis& r) { return r.genotype.recurrent_links; }},
-      {"cycle_links", "links on a directed cycle", "count", [](const RunAnalysis& r) { return r.genotype.cycle_links; }},
+      {"recurrent_links", "recurrent links (not forward)", "count",
+       [](const RunAnalysis& r) { return r.genotype.recurrent_links; }},
+      {"cycle_links", "links on a directed cycle", "count",
+       [](const RunAnalysis& r) { return r.genotype.cycle_links; }},
   };
   e.genotype = compare_all(geno, e, true);
 
@@ -176,19 +190,25 @@ ExperimentAnalysis analyze_experiment(std::vector<RunAnalysis> runs, const std::
   const auto& C = e.control;
   const auto& X = e.experimental;
   e.champion = {
-      compare("topology_changed_per_run", "share of a run's new champions whose topology differs from the previous "
-              "champion's (per run)", "share", per_run(C, all, indicator), per_run(X, all, indicator)),
-      compare("improvement_changed_per_run", "a run's mean fitness gain of its new champions with a different "
-              "topology (per run)", "fitness units", per_run(C, changed, gain), per_run(X, changed, gain)),
-      compare("improvement_same_per_run", "a run's mean fitness gain of its new champions with the same topology "
-              "(per run)", "fitness units", per_run(C, same, gain), per_run(X, same, gain)),
+      compare("topology_changed_per_run",
+              "share of a run's new champions whose topology differs from the previous "
+              "champion's (per run)",
+              "share", per_run(C, all, indicator), per_run(X, all, indicator)),
+      compare("improvement_changed_per_run",
+              "a run's mean fitness gain of its new champions with a different "
+              "topology (per run)",
+              "fitness units", per_run(C, changed, gain), per_run(X, changed, gain)),
+      compare("improvement_same_per_run",
+              "a run's mean fitness gain of its new champions with the same topology "
+              "(per run)",
+              "fitness units", per_run(C, same, gain), per_run(X, same, gain)),
       compare("new_champions_per_run", "new champions per run", "count", per_run_count(C), per_run_count(X)),
-      compare("topology_changed", "new champions whose topology differs from the previous champion's (pooled)",
-              "share", pooled(C, all, indicator), pooled(X, all, indicator), Samples::PooledEvents),
+      compare("topology_changed", "new champions whose topology differs from the previous champion's (pooled)", "share",
+              pooled(C, all, indicator), pooled(X, all, indicator), Samples::PooledEvents),
       compare("improvement_changed", "fitness gain of a new champion with a different topology (pooled)",
               "fitness units", pooled(C, changed, gain), pooled(X, changed, gain), Samples::PooledEvents),
-      compare("improvement_same", "fitness gain of a new champion with the same topology (pooled)",
-              "fitness units", pooled(C, same, gain), pooled(X, same, gain), Samples::PooledEvents),
+      compare("improvement_same", "fitness gain of a new champion with the same topology (pooled)", "fitness units",
+              pooled(C, same, gain), pooled(X, same, gain), Samples::PooledEvents),
       compare("improvement_all", "fitness gain of any new champion (pooled)", "fitness units", pooled(C, all, gain),
               pooled(X, all, gain), Samples::PooledEvents),
   };

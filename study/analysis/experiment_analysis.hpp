@@ -25,16 +25,16 @@ enum class Samples {
 
 /// One statistic compared between the control and the experimental arm.
 struct Comparison {
-  std::string key;        ///< short name (CSV column, plot file)
-  std::string label;      ///< what it is, for people
-  std::string unit;       ///< unit of the values
-  SampleStats control;    ///< control sample
+  std::string key;           ///< short name (CSV column, plot file)
+  std::string label;         ///< what it is, for people
+  std::string unit;          ///< unit of the values
+  SampleStats control;       ///< control sample
   SampleStats experimental;  ///< experimental sample
   Samples samples = Samples::Runs;
-  TTestResult student;    ///< Student's t, experimental against control (NaN for pooled events)
-  TTestResult welch;      ///< Welch's t, experimental against control (NaN for pooled events)
-  EffectSize effect;      ///< Cohen's d, experimental against control (NaN for pooled events)
-  std::string stars;      ///< significance_stars(student.p)
+  TTestResult student;  ///< Student's t, experimental against control (NaN for pooled events)
+  TTestResult welch;    ///< Welch's t, experimental against control (NaN for pooled events)
+  EffectSize effect;    ///< Cohen's d, experimental against control (NaN for pooled events)
+  std::string stars;    ///< significance_stars(student.p)
   /// Best-of-run robots of each arm that reached growth.max_spheres, when the
   /// statistic is censored by that cap (count; -1: not censored by it).
   int32_t control_at_cap = -1, experimental_at_cap = -1;
@@ -59,17 +59,17 @@ struct ArmFitness {
 };
 
 struct ExperimentAnalysis {
-  std::string control_arm = "feedforward";   ///< the arm compared as the control
-  std::string experimental_arm = "recurrent";///< the arm compared as the experimental regime
-  std::vector<RunAnalysis> control;       ///< the control arm's runs, by seed
-  std::vector<RunAnalysis> experimental;  ///< the experimental arm's runs, by seed
-  std::vector<RunAnalysis> other;         ///< runs of other arms (not compared), by arm and seed
-  std::vector<CurvePoint> fitness_curve;  ///< Figure 1
-  std::vector<Comparison> fitness;        ///< best-of-run fitness
-  std::vector<ArmFitness> other_arms;     ///< each arm of `other` against the control, by arm name
-  std::vector<Comparison> morphology;     ///< Figure 2
-  std::vector<Comparison> genotype;       ///< Figure 3
-  std::vector<Comparison> champion;       ///< section 4
+  std::string control_arm = "feedforward";     ///< the arm compared as the control
+  std::string experimental_arm = "recurrent";  ///< the arm compared as the experimental regime
+  std::vector<RunAnalysis> control;            ///< the control arm's runs, by seed
+  std::vector<RunAnalysis> experimental;       ///< the experimental arm's runs, by seed
+  std::vector<RunAnalysis> other;              ///< runs of other arms (not compared), by arm and seed
+  std::vector<CurvePoint> fitness_curve;       ///< Figure 1
+  std::vector<Comparison> fitness;             ///< best-of-run fitness
+  std::vector<ArmFitness> other_arms;          ///< each arm of `other` against the control, by arm name
+  std::vector<Comparison> morphology;          ///< Figure 2
+  std::vector<Comparison> genotype;            ///< Figure 3
+  std::vector<Comparison> champion;            ///< section 4
   /// Best-of-run robots without a pose stream (ground statistics counted as 0), per regime (count).
   int32_t control_without_poses = 0, experimental_without_poses = 0;
   /// Best-of-run robots with as many spheres as growth.max_spheres allows, per arm (count).

@@ -87,10 +87,12 @@ std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std
     << "set key top left\nset grid\nset style fill transparent solid 0.15 noborder\n"
     << "plot $curve using 1:($2-$3):($2+$3) with filledcurves lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($4-$5):($4+$5) with filledcurves lc rgb \"#d62728\" notitle, \\\n"
-    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title \"control: " << style.control_label << " CPPNs\", \\\n"
+    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title \"control: " << style.control_label
+    << " CPPNs\", \\\n"
     << "     $curve using 1:($2-$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($2+$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
-    << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title \"experimental: " << style.experimental_label << " CPPNs\", \\\n"
+    << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title \"experimental: " << style.experimental_label
+    << " CPPNs\", \\\n"
     << "     $curve using 1:($4-$5) with lines dt 3 lc rgb \"#d62728\" notitle, \\\n"
     << "     $curve using 1:($4+$5) with lines dt 3 lc rgb \"#d62728\" notitle";
   if (any_mark)
@@ -140,8 +142,8 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
     const bool nonneg = (c.control.n == 0 || c.control.mean - c.control.se >= 0) &&
                         (c.experimental.n == 0 || c.experimental.mean - c.experimental.se >= 0);
     s << "set title " << gnuplot_quote(t) << " font \",10\"\n"
-      << (nonneg ? "set yrange [0:*]\n" : "set autoscale y\n")
-      << "plot $p" << i << " every ::0::0 using 1:2 with boxes lc rgb \"#ffffff\", \\\n"
+      << (nonneg ? "set yrange [0:*]\n" : "set autoscale y\n") << "plot $p" << i
+      << " every ::0::0 using 1:2 with boxes lc rgb \"#ffffff\", \\\n"
       << "     $p" << i << " every ::1::1 using 1:2 with boxes lc rgb \"#d62728\", \\\n"
       << "     $p" << i << " using 1:2:3 with yerrorbars lc rgb \"black\" pt 7 ps 0.5\n";
   }
@@ -152,8 +154,8 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
 std::string outcome_shares_script(const std::vector<std::array<double, 6>>& shares, const std::string& png_path,
                                   const std::string& title, const PlotStyle& style) {
   if (shares.empty()) throw std::invalid_argument("outcome_shares_script: no generation to plot");
-  static const char* names[6] = {"not simulated", "completed", "stopped early", "acceleration fault",
-                                 "rolling (contact)", "rolling (spin)"};
+  static const char* names[6] = {"not simulated",      "completed",         "stopped early",
+                                 "acceleration fault", "rolling (contact)", "rolling (spin)"};
   static const char* colours[6] = {"#bbbbbb", "#2ca02c", "#1f77b4", "#d62728", "#ff7f0e", "#9467bd"};
   std::ostringstream s;
   s << terminal(png_path, style);

@@ -12,11 +12,11 @@
 namespace robozoo {
 
 struct PlotStyle {
-  int width = 1200;   ///< image width (pixels)
-  int height = 800;   ///< image height (pixels)
-  std::string font = "DejaVu Sans,11";  ///< pngcairo font
-  std::string control_label = "feed-forward";   ///< the control arm, for keys and axes
-  std::string experimental_label = "recurrent"; ///< the experimental arm
+  int width = 1200;                              ///< image width (pixels)
+  int height = 800;                              ///< image height (pixels)
+  std::string font = "DejaVu Sans,11";           ///< pngcairo font
+  std::string control_label = "feed-forward";    ///< the control arm, for keys and axes
+  std::string experimental_label = "recurrent";  ///< the experimental arm
 };
 
 /// Figure 1: mean best-so-far fitness per generation of each regime, with +-1

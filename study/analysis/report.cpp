@@ -30,7 +30,7 @@ int digits_for(double v) {
 std::string t_cell(const TTestResult& r) {
   if (std::isnan(r.t)) return "—";
   const std::string t = std::isfinite(r.t) ? fmt(r.t, 2) : (r.t > 0 ? "inf" : "-inf");
-  const std::string df = std::isnan(r.df)                                 ? "n/a"
+  const std::string df = std::isnan(r.df)                            ? "n/a"
                          : std::fabs(r.df - std::round(r.df)) < 1e-9 ? fmt(r.df, 0)
                                                                      : fmt(r.df, 1);
   return t + ", " + df + ", " + format_p(r.p);
@@ -56,8 +56,8 @@ std::string censor_note(const Comparison& c, const ExperimentAnalysis& a) {
     for (const auto& r : *side) cap = std::max(cap, r.max_spheres);
   return "censored: " + std::to_string(c.control_at_cap) + " of " + std::to_string(c.control.n) + " " +
          arm_title(a.control_arm) + " and " + std::to_string(c.experimental_at_cap) + " of " +
-         std::to_string(c.experimental.n) + " " + arm_title(a.experimental_arm) +
-         " best-of-run robots at max_spheres" + (cap > 0 ? " (" + std::to_string(cap) + ")" : std::string());
+         std::to_string(c.experimental.n) + " " + arm_title(a.experimental_arm) + " best-of-run robots at max_spheres" +
+         (cap > 0 ? " (" + std::to_string(cap) + ")" : std::string());
 }
 
 std::string label_cell(const Comparison& c, const ExperimentAnalysis& a) {
@@ -120,8 +120,8 @@ void other_arms_table(std::ostringstream& s, const ExperimentAnalysis& a, double
   for (const auto& o : a.other_arms) p.push_back(o.fitness.student.p);
   const std::vector<double> q = holm_adjust(p);
   s << "### Other arms against the control\n\n"
-    << "Best-so-far fitness at the last generation of every other arm in the folder against " << arm_title(a.control_arm)
-    << ": secondary tests, one family under Holm's correction at α = " << fmt(alpha, 2)
+    << "Best-so-far fitness at the last generation of every other arm in the folder against "
+    << arm_title(a.control_arm) << ": secondary tests, one family under Holm's correction at α = " << fmt(alpha, 2)
     << " (not the primary test; `--compare` makes a full report of any pair).\n\n"
     << "| arm | " << arm_title(a.control_arm)
     << " (mean ± s.e., n) | arm (mean ± s.e., n) | Student's t, df, p | Welch's t, df, p | Cohen's d [95 % CI] | "
@@ -218,7 +218,8 @@ std::string markdown_report(const ReportInputs& in) {
   if (!in.fitness_png.empty()) s << "![Figure 1](" << in.fitness_png << ")\n\n";
   s << "Mean best-so-far fitness over the runs of each arm; dotted lines and shading: ± one standard error "
        "(`fitness_curve.csv`). Marked at the foot: generations where Student's t-test of that generation gives "
-       "p < " << fmt(in.alpha, 2) << " (uncorrected, descriptive; the primary test is the last generation's): "
+       "p < "
+    << fmt(in.alpha, 2) << " (uncorrected, descriptive; the primary test is the last generation's): "
     << generation_list(a.fitness_curve, in.alpha) << ".\n\n";
   comparison_table(s, a.fitness, a);
   other_arms_table(s, a, in.alpha);
@@ -252,9 +253,9 @@ std::string markdown_report(const ReportInputs& in) {
     for (const auto& r : side) d = std::max(d, r.max_d);
     return d;
   };
-  s << "Largest displacement towards the target (the fitness term d) any logged robot reached: " << fmt(max_d(a.control), 3)
-    << " m (" << arm_title(a.control_arm) << "), " << fmt(max_d(a.experimental), 3) << " m ("
-    << arm_title(a.experimental_arm) << ")";
+  s << "Largest displacement towards the target (the fitness term d) any logged robot reached: "
+    << fmt(max_d(a.control), 3) << " m (" << arm_title(a.control_arm) << "), " << fmt(max_d(a.experimental), 3)
+    << " m (" << arm_title(a.experimental_arm) << ")";
   if (in.target_distance > 0)
     s << ", of the " << fmt(in.target_distance, 1) << " m from the start to the target: fitness did "
       << (std::max(max_d(a.control), max_d(a.experimental)) < 0.9 * in.target_distance ? "not " : "")

@@ -16,8 +16,8 @@ struct ZooSheet {
 
 struct ReportInputs {
   std::string title = "robozoo: recurrent vs feed-forward CPPNs";
-  std::string source;                     ///< where the logs came from (folder)
-  std::vector<std::string> preamble;      ///< paragraphs before the tables (sizes, how long it took)
+  std::string source;                 ///< where the logs came from (folder)
+  std::vector<std::string> preamble;  ///< paragraphs before the tables (sizes, how long it took)
   ExperimentAnalysis analysis;
   std::string fitness_png;                ///< Figure 1 file name, relative to the report ("" if none)
   std::string morphology_png;             ///< Figure 2

@@ -41,15 +41,15 @@ ArmRuns arm_runs(const std::string& arm, const std::vector<RunAnalysis>& side) {
 }
 
 std::string sizes(const RunAnalysis& r) {
-  std::string s = " --generations " + std::to_string(r.generations_requested) + " --population " +
-                  std::to_string(r.population);
+  std::string s =
+      " --generations " + std::to_string(r.generations_requested) + " --population " + std::to_string(r.population);
   if (r.steps > 0 && r.steps != 2500) s += " --steps " + std::to_string(r.steps);
   return s;
 }
 
 std::string experiment_line(const std::string& arms, size_t trials, const RunAnalysis& r, const std::string& dir) {
-  return "build/bin/robozoo-experiment --trials " + std::to_string(trials) + " --arms " + arms + sizes(r) +
-         " --out " + dir;
+  return "build/bin/robozoo-experiment --trials " + std::to_string(trials) + " --arms " + arms + sizes(r) + " --out " +
+         dir;
 }
 
 void per_run_lines(const ArmRuns& a, const std::string& dir, std::vector<std::string>& out) {
@@ -82,8 +82,8 @@ std::vector<std::string> reproduce_commands(const ExperimentAnalysis& a, const s
   std::vector<std::string> out;
   const ArmRuns c = arm_runs(a.control_arm, a.control), x = arm_runs(a.experimental_arm, a.experimental);
   out.push_back("# the runs compared here (arms, trials, sizes and seeds as found in the logs)");
-  const bool together = c.planned && x.planned && c.runs.size() == x.runs.size() &&
-                        sizes(*c.runs[0]) == sizes(*x.runs[0]);
+  const bool together =
+      c.planned && x.planned && c.runs.size() == x.runs.size() && sizes(*c.runs[0]) == sizes(*x.runs[0]);
   if (together) {
     out.push_back(experiment_line(a.control_arm + "," + a.experimental_arm, c.runs.size(), *c.runs[0], log_dir));
   } else {

@@ -283,8 +283,8 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
       fail("results.format", std::string("not ") + kRunResultsFormat);
     const int64_t version = as_i64(field(j, "version", "results"), "results.version");
     if (version != kRunResultsVersion)
-      fail("results.version", std::to_string(version) + " (this robozoo reads version " +
-                                  std::to_string(kRunResultsVersion) + ")");
+      fail("results.version",
+           std::to_string(version) + " (this robozoo reads version " + std::to_string(kRunResultsVersion) + ")");
     RunResults res;
     RunSummary& s = res.run;
     const json& run = field(j, "run", "results");
@@ -313,8 +313,8 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
     const std::string arm = as_string(field(run, "arm", rp), rp + ".arm");
     if (arm != s.arm) fail(rp + ".arm", "'" + arm + "', but its regime and configuration make it '" + s.arm + "'");
     s.max_d = read_num(field(j, "max_d", "results"), "results.max_d");
-    s.undecodable = as_int(field(j, "undecodable", "results"), "results.undecodable", 0,
-                           std::numeric_limits<int64_t>::max());
+    s.undecodable =
+        as_int(field(j, "undecodable", "results"), "results.undecodable", 0, std::numeric_limits<int64_t>::max());
     s.truncated = as_bool(field(j, "truncated", "results"), "results.truncated");
     const json& es = field(j, "evolve_seconds", "results");
     if (!es.is_null()) {
@@ -338,8 +338,8 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
     std::map<int32_t, int64_t> champion_of;  // generation -> champion id
     for (size_t i = 0; i < n; ++i) {
       GenerationRecord r;
-      r.generation = static_cast<int32_t>(as_int(gen[i], at(gp + ".generation", i), 0,
-                                                 std::numeric_limits<int32_t>::max()));
+      r.generation =
+          static_cast<int32_t>(as_int(gen[i], at(gp + ".generation", i), 0, std::numeric_limits<int32_t>::max()));
       if (i > 0 && r.generation <= s.generations.back().generation)
         fail(at(gp + ".generation", i), "generations must increase");
       r.best_fitness = read_num(best_f[i], at(gp + ".best_fitness", i));
@@ -387,8 +387,8 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
         const std::string js = as_string(joints, cp + ".joints");
         if (pa.empty()) fail(cp + ".parents", "a robot has at least one sphere");
         if (js.size() != pa.size())
-          fail(cp + ".joints", "has " + std::to_string(js.size()) + " flags for " + std::to_string(pa.size()) +
-                                   " spheres");
+          fail(cp + ".joints",
+               "has " + std::to_string(js.size()) + " flags for " + std::to_string(pa.size()) + " spheres");
         r.has_morphology = true;
         r.morphology.generation = r.generation;
         r.morphology.genome_id = m.genome_id;
@@ -400,8 +400,8 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
           sp.index = static_cast<int32_t>(k);
           sp.motor_neuron = -1;
           const int64_t hi = static_cast<int64_t>(k) - 1;
-          sp.parent = static_cast<int32_t>(
-              k == 0 ? as_int(pa[k], at(cp + ".parents", k), -1, -1) : as_int(pa[k], at(cp + ".parents", k), 0, hi));
+          sp.parent = static_cast<int32_t>(k == 0 ? as_int(pa[k], at(cp + ".parents", k), -1, -1)
+                                                  : as_int(pa[k], at(cp + ".parents", k), 0, hi));
           if (js[k] != '0' && js[k] != '1') fail(cp + ".joints", "flags must be '0' or '1'");
           sp.has_joint = js[k] == '1';
         }
@@ -425,8 +425,8 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
       // Structure only: any logged genome is kept (robozoo-evolve champion checks it against robozoo's layout).
       const Genome genome = genome_from_json(field(best, "genome", bp), bp + ".genome");
       if (genome.id != c.genome.genome_id)
-        fail(bp + ".genome.id", std::to_string(genome.id) + ", but the champion is " +
-                                    std::to_string(c.genome.genome_id));
+        fail(bp + ".genome.id",
+             std::to_string(genome.id) + ", but the champion is " + std::to_string(c.genome.genome_id));
       cppn_genome_t m = make_genome_message(s.run_id, c.generation, genome, c.genome.species_id, GenomeScore{}, 0);
       m.fitness = c.genome.fitness;
       m.r_term = c.genome.r_term;
@@ -436,10 +436,12 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
       const json& radius = as_array(field(best, "radius", bp), bp + ".radius");
       const json& sensors = as_array(field(best, "sensors", bp), bp + ".sensors");
       const size_t ns = c.has_morphology ? c.morphology.spheres.size() : 0;
-      if (radius.size() != ns) fail(bp + ".radius", "has " + std::to_string(radius.size()) + " entries for " +
-                                                        std::to_string(ns) + " spheres");
-      if (sensors.size() != ns) fail(bp + ".sensors", "has " + std::to_string(sensors.size()) + " entries for " +
-                                                          std::to_string(ns) + " spheres");
+      if (radius.size() != ns)
+        fail(bp + ".radius",
+             "has " + std::to_string(radius.size()) + " entries for " + std::to_string(ns) + " spheres");
+      if (sensors.size() != ns)
+        fail(bp + ".sensors",
+             "has " + std::to_string(sensors.size()) + " entries for " + std::to_string(ns) + " spheres");
       for (size_t k = 0; k < ns; ++k) {
         c.morphology.spheres[k].radius = read_num(radius[k], at(bp + ".radius", k));
         c.morphology.spheres[k].sensors = static_cast<int8_t>(as_int(sensors[k], at(bp + ".sensors", k), -128, 127));
@@ -448,8 +450,8 @@ RunResults run_results_from_json(const json& j, const std::string& path) {
       if (!z.is_null()) {
         const json& za = as_array(z, bp + ".min_center_z");
         if (c.has_morphology && za.size() != ns)
-          fail(bp + ".min_center_z", "has " + std::to_string(za.size()) + " heights for " + std::to_string(ns) +
-                                         " spheres");
+          fail(bp + ".min_center_z",
+               "has " + std::to_string(za.size()) + " heights for " + std::to_string(ns) + " spheres");
         std::vector<double> zs;
         for (size_t k = 0; k < za.size(); ++k) zs.push_back(read_num(za[k], at(bp + ".min_center_z", k)));
         s.min_center_z[c.genome.genome_id] = std::move(zs);

@@ -37,9 +37,9 @@
 namespace robozoo {
 
 struct RunResults {
-  RunSummary run;                ///< compact (compact_summary)
+  RunSummary run;  ///< compact (compact_summary)
   bool has_evolve_seconds = false;
-  double evolve_seconds = 0;     ///< robozoo-evolve's wall time from the run's checkpoint (s)
+  double evolve_seconds = 0;  ///< robozoo-evolve's wall time from the run's checkpoint (s)
 };
 
 inline constexpr const char* kRunResultsFormat = "robozoo-run-results";

@@ -30,8 +30,8 @@ void apply_run_configuration(RunSummary& s) {
     s.arm = arm_name(arm_of(s.regime == 0 ? Regime::FeedForward : Regime::Recurrent, c.neat.initial_links));
     s.max_spheres = c.eval.growth.max_spheres;
     const auto& sim = c.eval.sim;
-    s.target_distance = std::sqrt(sim.target_x * sim.target_x + sim.target_y * sim.target_y +
-                                  sim.target_z * sim.target_z);
+    s.target_distance =
+        std::sqrt(sim.target_x * sim.target_x + sim.target_y * sim.target_y + sim.target_z * sim.target_z);
   } catch (const std::exception&) {
     // A configuration this robozoo cannot read: the arm from the regime alone.
   }

@@ -18,14 +18,14 @@
 namespace robozoo {
 
 struct GenerationRecord {
-  int32_t generation = 0;            ///< 0-based
-  double best_fitness = 0;           ///< fitness units
-  double mean_fitness = 0;           ///< fitness units
-  double best_so_far_fitness = 0;    ///< fitness units
-  double stderr_fitness = 0;         ///< standard error of the mean fitness (fitness units)
-  int64_t evaluations = 0;           ///< cumulative evaluations since the start of the run (count)
-  int64_t champion_id = -1;          ///< genome id of the generation's champion
-  int32_t num_species = 0;           ///< species after speciation (count)
+  int32_t generation = 0;              ///< 0-based
+  double best_fitness = 0;             ///< fitness units
+  double mean_fitness = 0;             ///< fitness units
+  double best_so_far_fitness = 0;      ///< fitness units
+  double stderr_fitness = 0;           ///< standard error of the mean fitness (fitness units)
+  int64_t evaluations = 0;             ///< cumulative evaluations since the start of the run (count)
+  int64_t champion_id = -1;            ///< genome id of the generation's champion
+  int32_t num_species = 0;             ///< species after speciation (count)
   double compatibility_threshold = 0;  ///< NEAT compatibility threshold in force (distance units)
   /// Outcome counts of the generation (generation_t), in the outcome order:
   /// not simulated, completed, stopped early, acceleration fault, rolling by
@@ -34,33 +34,33 @@ struct GenerationRecord {
 };
 
 struct ChampionRecord {
-  int32_t generation = 0;        ///< generation the champion won
-  cppn_genome_t genome;               ///< its logged genome (fitness, outcome, nodes, links)
-  bool has_morphology = false;   ///< its morphology was logged and decoded
-  morphology_t morphology;       ///< valid when has_morphology
+  int32_t generation = 0;       ///< generation the champion won
+  cppn_genome_t genome;         ///< its logged genome (fitness, outcome, nodes, links)
+  bool has_morphology = false;  ///< its morphology was logged and decoded
+  morphology_t morphology;      ///< valid when has_morphology
 };
 
 struct RunSummary {
-  std::string path;                   ///< the log read
+  std::string path;  ///< the log read
   std::string run_id;
   std::string software_version;
   int64_t seed = 0;
-  int8_t regime = 0;                  ///< 0 feed-forward, 1 recurrent (run_t)
-  std::string arm = "feedforward";    ///< the experiment arm of its configuration (arm_of)
-  int32_t max_spheres = 0;            ///< growth.max_spheres of its configuration (count; 0 if unknown)
-  double max_d = 0;                   ///< the largest d term of any logged genome (m)
-  double target_distance = 0;         ///< distance from the origin to the target (m; 0 if unknown)
-  int32_t population = 0;             ///< genomes per generation (count)
-  int32_t generations_requested = 0;  ///< generations the run was started for (count)
-  int32_t steps = 0;                  ///< physics steps per evaluation (count)
-  double dt = 0;                      ///< physics step (s)
-  std::string config_json;            ///< the resolved configuration of its last run_t (JSON text)
+  int8_t regime = 0;                          ///< 0 feed-forward, 1 recurrent (run_t)
+  std::string arm = "feedforward";            ///< the experiment arm of its configuration (arm_of)
+  int32_t max_spheres = 0;                    ///< growth.max_spheres of its configuration (count; 0 if unknown)
+  double max_d = 0;                           ///< the largest d term of any logged genome (m)
+  double target_distance = 0;                 ///< distance from the origin to the target (m; 0 if unknown)
+  int32_t population = 0;                     ///< genomes per generation (count)
+  int32_t generations_requested = 0;          ///< generations the run was started for (count)
+  int32_t steps = 0;                          ///< physics steps per evaluation (count)
+  double dt = 0;                              ///< physics step (s)
+  std::string config_json;                    ///< the resolved configuration of its last run_t (JSON text)
   std::vector<GenerationRecord> generations;  ///< in generation order, one per logged generation
   std::vector<ChampionRecord> champions;      ///< in generation order, one per generation whose champion was logged
   /// Per genome id with a logged pose stream: the lowest centre height of each sphere over the stream (m).
   std::map<int64_t, std::vector<double>> min_center_z;
-  int64_t undecodable = 0;   ///< robozoo messages that failed to decode (count)
-  bool truncated = false;    ///< the log ends inside an event
+  int64_t undecodable = 0;  ///< robozoo messages that failed to decode (count)
+  bool truncated = false;   ///< the log ends inside an event
 
   /// Every requested generation is in the log, 0 to generations_requested - 1.
   bool complete() const;

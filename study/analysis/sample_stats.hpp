@@ -7,10 +7,10 @@
 namespace robozoo {
 
 struct SampleStats {
-  size_t n = 0;        ///< sample size (count)
-  double mean = 0.0;   ///< arithmetic mean (NaN when n = 0)
-  double sd = 0.0;     ///< standard deviation with n - 1 in the denominator (0 when n < 2)
-  double se = 0.0;     ///< standard error of the mean, sd / sqrt(n) (0 when n < 2)
+  size_t n = 0;       ///< sample size (count)
+  double mean = 0.0;  ///< arithmetic mean (NaN when n = 0)
+  double sd = 0.0;    ///< standard deviation with n - 1 in the denominator (0 when n < 2)
+  double se = 0.0;    ///< standard error of the mean, sd / sqrt(n) (0 when n < 2)
 };
 
 /// Describes `x`. NaN values are not allowed (std::invalid_argument).

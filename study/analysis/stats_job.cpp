@@ -75,9 +75,8 @@ std::vector<std::string> list_logs(const std::string& dir) { return list_ending(
 
 std::vector<std::string> list_results(const std::string& dir) { return list_ending(dir, kRunResultsExtension); }
 
-std::vector<std::string> export_results(const std::string& log_dir, const std::string& out_dir,
-                                        bool include_unfinished, std::ostream& progress,
-                                        std::vector<std::string>& skipped) {
+std::vector<std::string> export_results(const std::string& log_dir, const std::string& out_dir, bool include_unfinished,
+                                        std::ostream& progress, std::vector<std::string>& skipped) {
   const std::vector<std::string> logs = list_logs(log_dir);
   if (logs.empty()) throw std::invalid_argument("no *.lcmlog in " + log_dir);
   fs::create_directories(out_dir);
@@ -122,11 +121,11 @@ void write_text(const std::string& path, const std::string& text) {
 /// What robozoo-stats read from a folder of logs or compact results.
 struct RunsRead {
   std::vector<RunAnalysis> runs;
-  bool from_results = false;                                      ///< compact results, not logs
-  std::map<std::string, std::vector<std::string>> per_arm_logs;   ///< logs by arm (none from results)
-  std::set<std::tuple<int32_t, int32_t, int32_t>> sizes;          ///< population, generations, steps
-  double evolve_seconds = 0;                                      ///< robozoo-evolve's wall time (s)
-  int with_checkpoint = 0;                                        ///< runs that know it (count)
+  bool from_results = false;                                     ///< compact results, not logs
+  std::map<std::string, std::vector<std::string>> per_arm_logs;  ///< logs by arm (none from results)
+  std::set<std::tuple<int32_t, int32_t, int32_t>> sizes;         ///< population, generations, steps
+  double evolve_seconds = 0;                                     ///< robozoo-evolve's wall time (s)
+  int with_checkpoint = 0;                                       ///< runs that know it (count)
 };
 
 /// Reads and analyses every run of the folder; a run that cannot be used is
@@ -162,9 +161,8 @@ RunsRead read_runs(const StatsOptions& o, std::vector<std::string>& skipped, std
       progress << "  " << name << ": skipped: " << e.what() << "\n";
       continue;
     }
-    progress << "  " << name << ": " << arm_title(a.arm) << " seed " << a.seed << ", "
-             << a.best_so_far.size() << " generations, best " << (a.best_so_far.empty() ? 0.0 : a.best_so_far.back())
-             << "\n";
+    progress << "  " << name << ": " << arm_title(a.arm) << " seed " << a.seed << ", " << a.best_so_far.size()
+             << " generations, best " << (a.best_so_far.empty() ? 0.0 : a.best_so_far.back()) << "\n";
     r.sizes.insert({a.population, a.generations_requested, a.steps});
     if (!from_results) r.per_arm_logs[a.arm].push_back(path);
     if (results.has_evolve_seconds) {
@@ -224,7 +222,8 @@ ReportInputs report_text(const StatsOptions& o, const StatsOutcome& out, const R
   }
   if (sizes.size() > 1) rep.notes.push_back("The runs do not all have the same sizes: compare with care.");
   if (!A.other.empty())
-    rep.notes.push_back(std::to_string(A.other.size()) + " runs of other arms are in the folder: only their "
+    rep.notes.push_back(std::to_string(A.other.size()) +
+                        " runs of other arms are in the folder: only their "
                         "fitness is compared, against the control, under Figure 1 (robozoo-stats --compare chooses "
                         "the two arms of the full comparison).");
   for (const auto* side : {&A.control, &A.experimental})
@@ -234,7 +233,8 @@ ReportInputs report_text(const StatsOptions& o, const StatsOutcome& out, const R
       "Best-of-run robot: the champion with the highest fitness in a run (the earliest, among equals). Leaves: "
       "spheres other than the root with no child. Radius variance: within a robot, divided by the number of "
       "spheres. Depth: parent links from the root. A sphere touched the ground when its centre height minus its "
-      "radius was at most " + csv_number(o.analysis.morphology.ground_epsilon) +
+      "radius was at most " +
+      csv_number(o.analysis.morphology.ground_epsilon) +
       " m at some pose of the champion's logged pose stream (every k-th step of its simulation).");
   rep.notes.push_back(
       "CPPN links are the enabled link genes; a forward link goes from a node at a lower drawing position to one at "
@@ -258,7 +258,8 @@ void make_plots(const StatsOptions& o, StatsOutcome& out, ReportInputs& rep) {
   const std::string ctl = arm_title(A.control_arm), exp = arm_title(A.experimental_arm);
   auto file = [&out](const std::string& name) { return output_file(out, name); };
   if (!gnuplot_available(o.gnuplot))
-    throw std::runtime_error("cannot run " + o.gnuplot + " with the pngcairo terminal (install gnuplot-nox), "
+    throw std::runtime_error("cannot run " + o.gnuplot +
+                             " with the pngcairo terminal (install gnuplot-nox), "
                              "or use --no-plots");
   auto plot = [&](const std::string& stem, const std::string& script_text) {
     const std::string gp = file(stem + ".gp");
@@ -274,31 +275,30 @@ void make_plots(const StatsOptions& o, StatsOutcome& out, ReportInputs& rep) {
   PlotStyle wide = labels;
   wide.width = 1500;
   wide.height = 1050;
-  rep.fitness_png = plot("fig1_fitness", fitness_curve_script(A.fitness_curve, "fig1_fitness.png",
-                                                              "Figure 1: mean best-so-far fitness, ± 1 s.e.",
-                                                              labels, o.alpha));
-  rep.morphology_png = plot("fig2_morphology",
-                            comparison_panels_script(A.morphology, "fig2_morphology.png",
-                                                     "Figure 2: best-of-run robots (mean ± 1 s.e.; white " +
-                                                         ctl + ", red " + exp + ")",
-                                                     4, wide));
+  rep.fitness_png =
+      plot("fig1_fitness", fitness_curve_script(A.fitness_curve, "fig1_fitness.png",
+                                                "Figure 1: mean best-so-far fitness, ± 1 s.e.", labels, o.alpha));
+  rep.morphology_png =
+      plot("fig2_morphology",
+           comparison_panels_script(A.morphology, "fig2_morphology.png",
+                                    "Figure 2: best-of-run robots (mean ± 1 s.e.; white " + ctl + ", red " + exp + ")",
+                                    4, wide));
   PlotStyle mid = labels;
   mid.width = 1500;
   mid.height = 750;
-  rep.genotype_png = plot("fig3_genotype",
-                          comparison_panels_script(A.genotype, "fig3_genotype.png",
-                                                   "Figure 3: best-of-run CPPNs (mean ± 1 s.e.)", 4, mid));
-  rep.champion_png = plot("champion_changes",
-                          comparison_panels_script(A.champion, "champion_changes.png",
-                                                   "Section 4: new champions (mean ± 1 s.e.)", 3, mid));
+  rep.genotype_png = plot(
+      "fig3_genotype",
+      comparison_panels_script(A.genotype, "fig3_genotype.png", "Figure 3: best-of-run CPPNs (mean ± 1 s.e.)", 4, mid));
+  rep.champion_png = plot(
+      "champion_changes",
+      comparison_panels_script(A.champion, "champion_changes.png", "Section 4: new champions (mean ± 1 s.e.)", 3, mid));
   for (const auto* side : {&A.control, &A.experimental}) {
     if (side->empty()) continue;
     const std::string arm = side == &A.control ? A.control_arm : A.experimental_arm;
-    rep.outcome_pngs.push_back(plot("outcomes-" + arm, outcome_shares_script(mean_outcome_shares(*side),
-                                                                             "outcomes-" + arm + ".png",
-                                                                             "Outcome shares per generation: " +
-                                                                                 arm_title(arm) + " CPPNs",
-                                                                             labels)));
+    rep.outcome_pngs.push_back(
+        plot("outcomes-" + arm,
+             outcome_shares_script(mean_outcome_shares(*side), "outcomes-" + arm + ".png",
+                                   "Outcome shares per generation: " + arm_title(arm) + " CPPNs", labels)));
   }
 }
 
@@ -323,8 +323,9 @@ void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out
     if (!o.zoo) {
       z.note = "not made (--no-zoo)";
     } else if (from_results) {
-      z.note = "not made: the folder holds compact results, and robozoo-render draws robots from logs "
-               "(robozoo-evolve champion RESULT --log OUT writes one)";
+      z.note =
+          "not made: the folder holds compact results, and robozoo-render draws robots from logs "
+          "(robozoo-evolve champion RESULT --log OUT writes one)";
     } else if (regime_logs.empty()) {
       z.note = "no run";
     } else if (!is_executable(render)) {
@@ -346,8 +347,7 @@ void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out
                  "... --best-of-run)";
         out.files.push_back(png);
       } else {
-        z.note = "robozoo-render failed (exit status " + std::to_string(res.status) + "): " +
-                 res.output.substr(0, 300);
+        z.note = "robozoo-render failed (exit status " + std::to_string(res.status) + "): " + res.output.substr(0, 300);
       }
     }
     rep.zoo.push_back(z);
@@ -356,8 +356,7 @@ void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out
 
 /// The robozoo-stats command that makes this report again.
 std::string stats_command(const StatsOptions& o, const ExperimentAnalysis& A) {
-  std::string stats = "build/bin/robozoo-stats " + o.log_dir + " --compare " + A.control_arm + "," +
-                      A.experimental_arm;
+  std::string stats = "build/bin/robozoo-stats " + o.log_dir + " --compare " + A.control_arm + "," + A.experimental_arm;
   if (o.include_unfinished) stats += " --include-unfinished";
   if (o.analysis.morphology.ground_epsilon != AnalysisParams{}.morphology.ground_epsilon)
     stats += " --ground-epsilon " + csv_number(o.analysis.morphology.ground_epsilon);

@@ -14,19 +14,19 @@
 namespace robozoo {
 
 struct StatsOptions {
-  std::string log_dir;               ///< folder of the runs' logs (*.lcmlog), or else of their compact results (*.results.json)
-  std::string out_dir;               ///< where the tables, plots and report go (empty: <log_dir>/stats)
-  bool include_unfinished = false;   ///< also use runs whose log lacks generations (default: skip them)
-  AnalysisParams analysis;           ///< ground tolerance, topology, which champion changes count
-  bool plots = true;                 ///< run gnuplot
-  std::string gnuplot = "gnuplot";   ///< the gnuplot program
-  bool zoo = true;                   ///< make zoo sheets with robozoo-render
-  std::string render;                ///< the robozoo-render program (empty: next to the running program)
+  std::string log_dir;  ///< folder of the runs' logs (*.lcmlog), or else of their compact results (*.results.json)
+  std::string out_dir;  ///< where the tables, plots and report go (empty: <log_dir>/stats)
+  bool include_unfinished = false;  ///< also use runs whose log lacks generations (default: skip them)
+  AnalysisParams analysis;          ///< ground tolerance, topology, which champion changes count
+  bool plots = true;                ///< run gnuplot
+  std::string gnuplot = "gnuplot";  ///< the gnuplot program
+  bool zoo = true;                  ///< make zoo sheets with robozoo-render
+  std::string render;               ///< the robozoo-render program (empty: next to the running program)
   std::string title = "robozoo: recurrent vs feed-forward CPPNs";
   std::string control_arm = "feedforward";     ///< the arm compared as the control
   std::string experimental_arm = "recurrent";  ///< the arm compared as the experimental regime
-  std::vector<std::string> notes;    ///< paragraphs for the top of the report
-  double alpha = 0.05;               ///< significance level of every test (the paper's)
+  std::vector<std::string> notes;              ///< paragraphs for the top of the report
+  double alpha = 0.05;                         ///< significance level of every test (the paper's)
 };
 
 struct StatsOutcome {
@@ -51,9 +51,8 @@ std::string results_file_name(const std::string& log_path);
 /// (created if missing), one file per log; logs that cannot be read, and
 /// unfinished ones unless `include_unfinished`, are listed in `skipped`.
 /// Returns the files written. Throws std::invalid_argument when there is no log.
-std::vector<std::string> export_results(const std::string& log_dir, const std::string& out_dir,
-                                        bool include_unfinished, std::ostream& progress,
-                                        std::vector<std::string>& skipped);
+std::vector<std::string> export_results(const std::string& log_dir, const std::string& out_dir, bool include_unfinished,
+                                        std::ostream& progress, std::vector<std::string>& skipped);
 
 /// Runs the whole job, telling `progress` what it does; reads the logs of
 /// `log_dir`, or its compact results when it holds no log (the same report,

@@ -9,8 +9,8 @@ namespace robozoo {
 ProgressEstimate estimate_progress(const ProgressTotals& t) {
   ProgressEstimate e;
   if (t.generations_total > 0)
-    e.fraction = std::min(1.0, std::max(0.0, static_cast<double>(t.generations_done) /
-                                                 static_cast<double>(t.generations_total)));
+    e.fraction = std::min(
+        1.0, std::max(0.0, static_cast<double>(t.generations_done) / static_cast<double>(t.generations_total)));
   if (t.generations_done >= t.generations_total) {
     e.known = true;
     return e;

@@ -20,9 +20,9 @@ struct ProgressTotals {
 };
 
 struct ProgressEstimate {
-  double fraction = 0;            ///< done / total, in [0, 1]
-  bool known = false;             ///< an estimate exists (some generation finished, some time spent)
-  double remaining_seconds = 0;   ///< estimated wall time left (s), when known
+  double fraction = 0;           ///< done / total, in [0, 1]
+  bool known = false;            ///< an estimate exists (some generation finished, some time spent)
+  double remaining_seconds = 0;  ///< estimated wall time left (s), when known
 };
 
 ProgressEstimate estimate_progress(const ProgressTotals& t);

@@ -19,7 +19,8 @@ std::string arm_name(Arm a) {
 Arm arm_from_name(const std::string& name) {
   for (int a = 0; a < kNumArms; ++a)
     if (arm_name(static_cast<Arm>(a)) == name) return static_cast<Arm>(a);
-  throw std::invalid_argument("unknown arm '" + name + "' (use feedforward, recurrent, recurrent-sparse, recurrent-zero)");
+  throw std::invalid_argument("unknown arm '" + name +
+                              "' (use feedforward, recurrent, recurrent-sparse, recurrent-zero)");
 }
 
 Regime arm_regime(Arm a) { return a == Arm::FeedForward ? Regime::FeedForward : Regime::Recurrent; }
@@ -44,9 +45,7 @@ Arm arm_of(Regime regime, InitialLinks initial_links) {
   return Arm::Recurrent;
 }
 
-int64_t trial_seed(Arm a, int trial) {
-  return static_cast<int64_t>(kNumArms) * (trial - 1) + static_cast<int>(a) + 1;
-}
+int64_t trial_seed(Arm a, int trial) { return static_cast<int64_t>(kNumArms) * (trial - 1) + static_cast<int>(a) + 1; }
 
 std::string Trial::name() const { return arm_name(arm) + "-s" + std::to_string(seed); }
 
@@ -63,13 +62,11 @@ void validate_experiment(const ExperimentParams& p) {
        "--mpi needs at least 2 ranks (rank 0 evolves, ranks 1.. evaluate), got " + std::to_string(p.mpi_ranks));
   need(p.mpi_ranks == 0 || p.workers == 0,
        "--workers and --mpi exclude each other: with --mpi the trial's ranks 1.. are its workers");
-  need(p.mpi_ranks == 0 || (!p.mpirun.empty() && !p.mpirun.front().empty()),
-       "--mpirun: the MPI launcher is empty");
+  need(p.mpi_ranks == 0 || (!p.mpirun.empty() && !p.mpirun.front().empty()), "--mpirun: the MPI launcher is empty");
   need(!p.out_dir.empty(), "--out: the experiment needs a folder");
   need(!p.arms.empty(), "--arms: the experiment needs at least one arm");
   for (size_t i = 0; i < p.arms.size(); ++i)
-    for (size_t j = 0; j < i; ++j)
-      need(p.arms[i] != p.arms[j], "--arms: " + arm_name(p.arms[i]) + " is given twice");
+    for (size_t j = 0; j < i; ++j) need(p.arms[i] != p.arms[j], "--arms: " + arm_name(p.arms[i]) + " is given twice");
 }
 
 std::vector<Trial> plan_trials(const ExperimentParams& p) {
@@ -93,9 +90,19 @@ std::vector<std::string> evolve_arguments(const Trial& t, const ExperimentParams
   // The sizes go on the command line on resume too: robozoo-evolve takes the run's
   // configuration from the checkpoint, but builds its evaluator from the command
   // line, so a resume without them would evaluate with the default steps.
-  std::vector<std::string> a = {"--log", t.log_path, "--quiet", "--regime", regime_name(t.regime), "--seed",
-                                std::to_string(t.seed), "--population", std::to_string(p.population),
-                                "--generations", std::to_string(p.generations), "--run-id", t.name()};
+  std::vector<std::string> a = {"--log",
+                                t.log_path,
+                                "--quiet",
+                                "--regime",
+                                regime_name(t.regime),
+                                "--seed",
+                                std::to_string(t.seed),
+                                "--population",
+                                std::to_string(p.population),
+                                "--generations",
+                                std::to_string(p.generations),
+                                "--run-id",
+                                t.name()};
   if (arm_initial_links(t.arm) != NeatParams{}.initial_links)
     a.insert(a.end(), {"--set", "neat.initial_links=" + initial_links_name(arm_initial_links(t.arm))});
   if (p.steps > 0) a.insert(a.end(), {"--steps", std::to_string(p.steps)});

@@ -30,8 +30,8 @@ enum class Arm : int8_t { FeedForward = 0, Recurrent = 1, RecurrentSparse = 2, R
 constexpr int kNumArms = 4;
 /// "feedforward", "recurrent", "recurrent-sparse", "recurrent-zero"
 std::string arm_name(Arm a);
-Arm arm_from_name(const std::string& name);    ///< throws std::invalid_argument listing the names
-Regime arm_regime(Arm a);                      ///< the regime the arm evolves in
+Arm arm_from_name(const std::string& name);  ///< throws std::invalid_argument listing the names
+Regime arm_regime(Arm a);                    ///< the regime the arm evolves in
 /// The generation-0 topology of the arm's runs: inputs_to_outputs for
 /// recurrent-sparse, all_allowed_recurrent_zero for recurrent-zero, the default
 /// (all_allowed) otherwise.
@@ -45,25 +45,25 @@ Arm arm_of(Regime regime, InitialLinks initial_links);
 int64_t trial_seed(Arm a, int trial);
 
 struct ExperimentParams {
-  int trials = 30;          ///< trials per arm, 1..trials (count)
+  int trials = 30;                                             ///< trials per arm, 1..trials (count)
   std::vector<Arm> arms = {Arm::FeedForward, Arm::Recurrent};  ///< the arms, in the order trials run
-  int generations = 500;    ///< generations per trial (count)
-  int population = 150;     ///< genomes per generation (count)
-  int steps = 0;            ///< physics steps per evaluation (count); 0: robozoo-evolve's default (2,500)
-  int workers = 0;          ///< robozoo-evolve's --workers (count); 0: one per core
-  int mpi_ranks = 0;        ///< ranks of each trial's MPI job (count, >= 2); 0: local worker processes
+  int generations = 500;                                       ///< generations per trial (count)
+  int population = 150;                                        ///< genomes per generation (count)
+  int steps = 0;      ///< physics steps per evaluation (count); 0: robozoo-evolve's default (2,500)
+  int workers = 0;    ///< robozoo-evolve's --workers (count); 0: one per core
+  int mpi_ranks = 0;  ///< ranks of each trial's MPI job (count, >= 2); 0: local worker processes
   std::vector<std::string> mpirun = {"mpirun"};  ///< the MPI launcher and its own options, before -np
-  std::string out_dir;      ///< folder of the trials' logs
+  std::string out_dir;                           ///< folder of the trials' logs
 };
 
 struct Trial {
   Arm arm = Arm::FeedForward;
   Regime regime = Regime::FeedForward;
-  int number = 1;           ///< trial number within its arm, 1-based
-  int64_t seed = 1;         ///< trial_seed(arm, number)
-  std::string log_path;     ///< <out_dir>/<arm>-s<seed>.lcmlog
-  std::string output_path;  ///< <out_dir>/<arm>-s<seed>.out: robozoo-evolve's messages, appended
-  std::string name() const; ///< "<arm>-s<seed>", also the run id
+  int number = 1;            ///< trial number within its arm, 1-based
+  int64_t seed = 1;          ///< trial_seed(arm, number)
+  std::string log_path;      ///< <out_dir>/<arm>-s<seed>.lcmlog
+  std::string output_path;   ///< <out_dir>/<arm>-s<seed>.out: robozoo-evolve's messages, appended
+  std::string name() const;  ///< "<arm>-s<seed>", also the run id
 };
 
 /// Throws std::invalid_argument naming the parameter when one is out of range.

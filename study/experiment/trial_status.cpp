@@ -59,9 +59,9 @@ TrialStatus trial_status(const Trial& t, const ExperimentParams& p) {
   if (planned > p.generations) {
     // Run further than asked (an arm extended before): done once it has p.generations.
     if (s.generations_done < p.generations)
-      throw std::invalid_argument(t.log_path + " was started for " + std::to_string(planned) +
-                                  " generations and has " + std::to_string(s.generations_done) +
-                                  "; continue it with --generations " + std::to_string(planned));
+      throw std::invalid_argument(t.log_path + " was started for " + std::to_string(planned) + " generations and has " +
+                                  std::to_string(s.generations_done) + "; continue it with --generations " +
+                                  std::to_string(planned));
     s.state = TrialState::Finished;
     s.generations_done = p.generations;
     return s;

@@ -233,10 +233,8 @@ TEST(LcmTypes, LogFileRoundTrip) {
   ASSERT_GE(fd, 0);
   close(fd);
   const std::vector<std::pair<std::string, std::vector<uint8_t>>> events = {
-      {"ROBOZOO_RUN", encode(make_run())},
-      {"ROBOZOO_GENERATION", encode(make_generation())},
-      {"ROBOZOO_GENOME", encode(make_genome())},
-      {"ROBOZOO_MORPHOLOGY", encode(make_morphology())},
+      {"ROBOZOO_RUN", encode(make_run())},       {"ROBOZOO_GENERATION", encode(make_generation())},
+      {"ROBOZOO_GENOME", encode(make_genome())}, {"ROBOZOO_MORPHOLOGY", encode(make_morphology())},
       {"ROBOZOO_POSE", encode(make_pose())},
   };
   {

@@ -18,11 +18,11 @@ namespace robozoo::render::testing {
 struct DecodedVideo {
   bool ok = false;
   std::string error;
-  std::string codec;       ///< e.g. "h264"
-  std::string pix_fmt;     ///< e.g. "yuv420p"
+  std::string codec;    ///< e.g. "h264"
+  std::string pix_fmt;  ///< e.g. "yuv420p"
   int width = 0, height = 0;
   double fps = 0;
-  double duration = 0;     ///< the stream's duration (s), as ffprobe reports it
+  double duration = 0;                     ///< the stream's duration (s), as ffprobe reports it
   std::vector<std::vector<uint8_t>> luma;  ///< every frame's Y plane, width x height
   bool moov_before_mdat = false;           ///< +faststart
 };

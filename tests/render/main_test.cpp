@@ -32,7 +32,9 @@ class RenderCli : public ::testing::Test {
     Evolution(c, o, ev).run();
   }
   static void TearDownTestSuite() { delete dir_; }
-  static robozoo::testing::Outcome cli(const std::string& args) { return run_shell(bin("robozoo-render") + " " + args); }
+  static robozoo::testing::Outcome cli(const std::string& args) {
+    return run_shell(bin("robozoo-render") + " " + args);
+  }
   static std::string path(const std::string& name) { return *dir_ / name; }
   static TempDir* dir_;
 };
@@ -46,21 +48,24 @@ TEST_F(RenderCli, HelpListsTheSubcommands) {
 }
 
 TEST_F(RenderCli, ZooOfOneLogAndOfSeveral) {
-  const robozoo::testing::Outcome one = cli("zoo " + path("run.lcmlog") + " --top 3 --cell 120x90 --columns 3 -o " + path("top.png"));
+  const robozoo::testing::Outcome one =
+      cli("zoo " + path("run.lcmlog") + " --top 3 --cell 120x90 --columns 3 -o " + path("top.png"));
   ASSERT_EQ(one.status, 0) << one.output;
   const Image top = read_png(path("top.png"));
   EXPECT_EQ(top.width(), 12 + 3 * (120 + 12));
-  const robozoo::testing::Outcome two = cli("zoo " + path("run.lcmlog") + " " + path("run8.lcmlog") + " --cell 120x90 -o " +
-                             path("best.png"));
+  const robozoo::testing::Outcome two =
+      cli("zoo " + path("run.lcmlog") + " " + path("run8.lcmlog") + " --cell 120x90 -o " + path("best.png"));
   ASSERT_EQ(two.status, 0) << two.output;
   EXPECT_NE(two.output.find("2 robots"), std::string::npos) << two.output;  // best of each run
-  const robozoo::testing::Outcome gen = cli("zoo " + path("run.lcmlog") + " --generation 2 --cell 120x90 -o " + path("g2.png"));
+  const robozoo::testing::Outcome gen =
+      cli("zoo " + path("run.lcmlog") + " --generation 2 --cell 120x90 -o " + path("g2.png"));
   ASSERT_EQ(gen.status, 0) << gen.output;
   EXPECT_NE(gen.output.find("1 robots"), std::string::npos) << gen.output;
 }
 
 TEST_F(RenderCli, VideoOfTheChampion) {
-  const robozoo::testing::Outcome o = cli("video " + path("run.lcmlog") + " --size 160x90 --speed 8 -o " + path("c.mp4"));
+  const robozoo::testing::Outcome o =
+      cli("video " + path("run.lcmlog") + " --size 160x90 --speed 8 -o " + path("c.mp4"));
   ASSERT_EQ(o.status, 0) << o.output;
   const auto v = render::testing::decode_video(path("c.mp4"));
   ASSERT_TRUE(v.ok) << v.error;
@@ -68,7 +73,8 @@ TEST_F(RenderCli, VideoOfTheChampion) {
   EXPECT_EQ(v.width, 160);
   EXPECT_EQ(v.height, 90);
   EXPECT_EQ(v.luma.size(), 13u);  // 4 s at x8 and 25 fps, plus the first frame
-  const robozoo::testing::Outcome re = cli("video " + path("run.lcmlog") + " --resimulate --size 160x90 --speed 8 -o " + path("r.mp4"));
+  const robozoo::testing::Outcome re =
+      cli("video " + path("run.lcmlog") + " --resimulate --size 160x90 --speed 8 -o " + path("r.mp4"));
   ASSERT_EQ(re.status, 0) << re.output;
   EXPECT_NE(re.output.find("re-simulated"), std::string::npos) << re.output;
 }
@@ -141,7 +147,8 @@ TEST_F(RenderCli, TruncatedLog) {
   EXPECT_NE(o.status, 0);
   EXPECT_NE(o.output.find("truncated"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("--allow-truncated"), std::string::npos) << o.output;
-  const robozoo::testing::Outcome ok = cli("zoo " + path("cut.lcmlog") + " --allow-truncated --cell 64x48 -o " + path("cut.png"));
+  const robozoo::testing::Outcome ok =
+      cli("zoo " + path("cut.lcmlog") + " --allow-truncated --cell 64x48 -o " + path("cut.png"));
   EXPECT_EQ(ok.status, 0) << ok.output;
 }
 
@@ -161,9 +168,7 @@ TEST_F(RenderCli, LogWithoutChampions) {
   EXPECT_FALSE(file_exists(path("e.png")));
   EXPECT_FALSE(file_exists(path("e.mp4")));
   // Not a log at all.
-  {
-    std::ofstream(path("text.lcmlog")) << "just some text";
-  }
+  { std::ofstream(path("text.lcmlog")) << "just some text"; }
   const robozoo::testing::Outcome t = cli("zoo " + path("text.lcmlog") + " -o " + path("t.png"));
   EXPECT_NE(t.status, 0);
   EXPECT_NE(t.output.find("not a robozoo-evolve log"), std::string::npos) << t.output;
@@ -179,7 +184,8 @@ TEST_F(RenderCli, OddAndMalformedVideoSizes) {
   const robozoo::testing::Outcome bad = cli("video " + path("run.lcmlog") + " --size large -o " + path("odd.mp4"));
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.output.find("WIDTHxHEIGHT"), std::string::npos) << bad.output;
-  const robozoo::testing::Outcome top = cli("zoo " + path("run.lcmlog") + " " + path("run8.lcmlog") + " --top 2 -o " + path("x.png"));
+  const robozoo::testing::Outcome top =
+      cli("zoo " + path("run.lcmlog") + " " + path("run8.lcmlog") + " --top 2 -o " + path("x.png"));
   EXPECT_NE(top.status, 0);
   EXPECT_NE(top.output.find("--top takes one log"), std::string::npos) << top.output;
 }

@@ -61,8 +61,8 @@ inline pose_t pose_message(const std::string& id, int32_t g, int64_t genome_id, 
   const morphology_t k = known_robot();
   m.num_spheres = spheres;
   for (int i = 0; i < spheres; ++i)
-    m.sphere_center.push_back({k.spheres[static_cast<size_t>(i % 4)].center[0] + dx, 0.0,
-                               k.spheres[static_cast<size_t>(i % 4)].center[2]});
+    m.sphere_center.push_back(
+        {k.spheres[static_cast<size_t>(i % 4)].center[0] + dx, 0.0, k.spheres[static_cast<size_t>(i % 4)].center[2]});
   return m;
 }
 

@@ -74,10 +74,12 @@ TEST(ChampionCheck, APoseAfterTheEndOfTheSimulationIsADivergence) {
   EXPECT_EQ(r.mismatches[0].what, "trajectory");
   EXPECT_NE(r.mismatches[0].field.find("step"), std::string::npos) << r.mismatches[0].field;
   EXPECT_EQ(r.mismatches[0].logged, std::to_string(p.step));
-  EXPECT_NE(r.mismatches[0].recomputed.find("none: the trajectory has"), std::string::npos) << r.mismatches[0].recomputed;
+  EXPECT_NE(r.mismatches[0].recomputed.find("none: the trajectory has"), std::string::npos)
+      << r.mismatches[0].recomputed;
   EXPECT_EQ(r.mismatches[1].what, "pose");
   EXPECT_EQ(r.mismatches[1].step, p.step);
-  EXPECT_NE(r.mismatches[1].recomputed.find("a step of the trajectory"), std::string::npos) << r.mismatches[1].recomputed;
+  EXPECT_NE(r.mismatches[1].recomputed.find("a step of the trajectory"), std::string::npos)
+      << r.mismatches[1].recomputed;
 }
 
 TEST(ChampionCheck, AMissingMorphologyMakesItUnusableButTheRestIsChecked) {

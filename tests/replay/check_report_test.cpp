@@ -56,9 +56,9 @@ TEST(CheckReport, ExitCodes) {
 
 TEST(CheckReport, ADivergedLineSaysWhereAndHowFar) {
   const std::string line = champion_line(diverged(3), false);
-  for (const char* part : {"DIVERGED", "gen 3", "genome 103", "pose step 240 body 2 body_position[2][0]",
-                           "logged 0.5", "recomputed 0.50000000000000011", "max error 3e-09", "37 values differ",
-                           "4 of 101 poses from step 240"})
+  for (const char* part :
+       {"DIVERGED", "gen 3", "genome 103", "pose step 240 body 2 body_position[2][0]", "logged 0.5",
+        "recomputed 0.50000000000000011", "max error 3e-09", "37 values differ", "4 of 101 poses from step 240"})
     EXPECT_NE(line.find(part), std::string::npos) << part << " not in: " << line;
 }
 

@@ -194,7 +194,8 @@ std::vector<uint8_t> bytes_of(const std::string& path) {
 }
 
 void put(const std::string& path, const std::vector<uint8_t>& b) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
 }
 
 TEST(Check, ATruncatedLogIsReportedAndWhatRemainsIsChecked) {

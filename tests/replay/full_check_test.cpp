@@ -28,7 +28,8 @@ FullCheckReport rerun(const std::string& path, FullCheckOptions o = {}, std::vec
         evaluator = std::make_unique<InProcessEvaluator>(c.eval);
         return *evaluator;
       },
-      o, [&](int done, int total, double) {
+      o,
+      [&](int done, int total, double) {
         if (calls) calls->push_back(done * 1000 + total);
       });
 }

@@ -20,8 +20,7 @@ testing::Outcome follow(const std::string& extra, TempDir& dir) {
                              "&recv_buf_size=4194304' --idle-exit 3 " + extra + " > '" + (dir / "replay.txt") +
                              "' 2>&1";
   const std::string script = "ip link set lo up && ip route add 224.0.0.0/4 dev lo && (" + replay +
-                             " & R=\\$!; sleep 1; " +
-                             join(evolve_args(dir / "own.lcmlog", 1, {"--lcm-url", kUrl})) +
+                             " & R=\\$!; sleep 1; " + join(evolve_args(dir / "own.lcmlog", 1, {"--lcm-url", kUrl})) +
                              " >/dev/null 2>&1; wait \\$R)";
   testing::Outcome o = run_shell("timeout 180 unshare -n sh -c \"" + script + "\"");
   o.output = read_file(dir / "replay.txt");
@@ -45,7 +44,8 @@ TEST(LiveCheckLive, ACleanRunIsProvedWhileItRuns) {
       return;
     }
     ASSERT_TRUE(o.output.find("BUS LOSS") != std::string::npos || o.output.find("bus loss:") != std::string::npos)
-        << "exit " << o.status << " without bus loss:\n" << o.output;
+        << "exit " << o.status << " without bus loss:\n"
+        << o.output;
     lost += "attempt " + std::to_string(attempt) + ":\n" + o.output;
   }
   FAIL() << "bus loss in 3 attempts:\n" << lost;

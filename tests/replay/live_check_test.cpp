@@ -128,7 +128,8 @@ TEST(LiveCheck, ThePublishersCountRevealsLossBetweenChampions) {
 }
 
 TEST(LiveCheck, JoiningMidRunWaitsForTheNextRunMessage) {
-  std::vector<LogRecord> v(small_log().records.begin() + nth_on(small_log(), kChannelGenome, 0), small_log().records.end());
+  std::vector<LogRecord> v(small_log().records.begin() + nth_on(small_log(), kChannelGenome, 0),
+                           small_log().records.end());
   const Fed f = feed(v);
   EXPECT_EQ(f.summary.exit_code(), 0) << all(f);
   EXPECT_EQ(f.summary.verdicts.size(), 3u) << all(f);

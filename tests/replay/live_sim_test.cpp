@@ -36,10 +36,11 @@ TEST(LiveSim, SendsStateThenEveryStepMatchingTheLoggedTrajectoryBitForBit) {
   LiveSimOptions o;
   o.genome_id = g.genome_id;
   o.speed = 2.0;
-  const LiveSimStats s = live_simulate(f.log, f.index, o, clock, [&](const std::string& c, const std::vector<uint8_t>& d) {
-    sent.push_back({c, d});
-    return true;
-  });
+  const LiveSimStats s =
+      live_simulate(f.log, f.index, o, clock, [&](const std::string& c, const std::vector<uint8_t>& d) {
+        sent.push_back({c, d});
+        return true;
+      });
   ASSERT_GE(sent.size(), 4u);
   EXPECT_EQ(sent[0].channel, kChannelRun);
   EXPECT_EQ(sent[1].channel, kChannelGenome);
@@ -86,10 +87,11 @@ TEST(LiveSim, PoseEveryThinsTheStreamButKeepsFirstAndLast) {
   LiveSimOptions o;
   o.genome_id = g.genome_id;
   o.pose_every = 7;
-  const LiveSimStats s = live_simulate(f.log, f.index, o, clock, [&](const std::string& c, const std::vector<uint8_t>& d) {
-    if (c == kChannelPose) steps.push_back(decode_as<pose_t>(LogRecord{0, 0, c, d}).step);
-    return true;
-  });
+  const LiveSimStats s =
+      live_simulate(f.log, f.index, o, clock, [&](const std::string& c, const std::vector<uint8_t>& d) {
+        if (c == kChannelPose) steps.push_back(decode_as<pose_t>(LogRecord{0, 0, c, d}).step);
+        return true;
+      });
   ASSERT_FALSE(steps.empty());
   EXPECT_EQ(steps.front(), 0);
   EXPECT_EQ(steps.back(), s.steps_run);

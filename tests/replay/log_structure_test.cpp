@@ -116,9 +116,8 @@ TEST(LogStructure, TwoSwappedPosesAreNamed) {
 void expect_missing_trajectory(size_t which) {
   const auto t = trajectory_records(which);
   const pose_t p = decode_as<pose_t>(small_log().records[t[0]]);
-  const CheckReport r = check_edited([&](std::vector<LogRecord>& v) {
-    v.erase(v.begin() + t.front(), v.begin() + t.back() + 1);
-  });
+  const CheckReport r =
+      check_edited([&](std::vector<LogRecord>& v) { v.erase(v.begin() + t.front(), v.begin() + t.back() + 1); });
   EXPECT_EQ(r.exit_code(), 1) << format_text(r);
   ASSERT_FALSE(r.structure.empty()) << format_text(r);
   const LogDifference& d = r.structure[0];
@@ -158,7 +157,8 @@ TEST(LogStructure, ARemovedGenerationMessageIsNamed) {
 }
 
 /// The small log with one field of the n-th generation_t changed.
-CheckReport with_generation(size_t n, const std::function<void(generation_t&)>& change, generation_t* before = nullptr) {
+CheckReport with_generation(size_t n, const std::function<void(generation_t&)>& change,
+                            generation_t* before = nullptr) {
   const size_t g = static_cast<size_t>(nth_on(small_log(), kChannelGeneration, n));
   if (before) *before = decode_as<generation_t>(small_log().records[g]);
   return check_edited([&](std::vector<LogRecord>& v) {
@@ -170,7 +170,8 @@ CheckReport with_generation(size_t n, const std::function<void(generation_t&)>& 
 
 TEST(LogStructure, AChangedBestFitnessIsNamedWithBothValues) {
   generation_t was{};
-  const CheckReport r = with_generation(1, [](generation_t& m) { m.best_fitness += 0.25; }, &was);
+  const CheckReport r = with_generation(
+      1, [](generation_t& m) { m.best_fitness += 0.25; }, &was);
   EXPECT_EQ(r.exit_code(), 1) << format_text(r);
   ASSERT_FALSE(r.structure.empty());
   const int64_t event = small_log().records[nth_on(small_log(), kChannelGeneration, 1)].eventnum;
@@ -188,7 +189,8 @@ TEST(LogStructure, AChangedBestFitnessIsNamedWithBothValues) {
 
 TEST(LogStructure, EvaluationsMustBeCumulative) {
   generation_t was{};
-  const CheckReport r = with_generation(2, [](generation_t& m) { m.evaluations += 1; }, &was);
+  const CheckReport r = with_generation(
+      2, [](generation_t& m) { m.evaluations += 1; }, &was);
   EXPECT_EQ(r.exit_code(), 1) << format_text(r);
   ASSERT_FALSE(r.structure.empty());
   EXPECT_EQ(r.structure[0].field, "evaluations");
@@ -215,7 +217,8 @@ TEST(LogStructure, BestSoFarIsTheRunningMaximum) {
 
 TEST(LogStructure, AChangedChampionIdIsNamed) {
   generation_t was{};
-  const CheckReport r = with_generation(1, [](generation_t& m) { m.champion_id += 1; }, &was);
+  const CheckReport r = with_generation(
+      1, [](generation_t& m) { m.champion_id += 1; }, &was);
   EXPECT_EQ(r.exit_code(), 1) << format_text(r);
   ASSERT_FALSE(r.structure.empty());
   EXPECT_EQ(r.structure[0].field, "champion_id");
@@ -235,7 +238,8 @@ TEST(LogStructure, TheRunMessageComesFirstAndOncePerGeneration) {
   EXPECT_EQ(moved.structure[0].logged, kChannelGeneration);
   EXPECT_EQ(moved.structure[0].expected, kChannelRun);
   // Twice before one generation.
-  const CheckReport twice = check_edited([&](std::vector<LogRecord>& v) { v.insert(v.begin() + second_run, v[second_run]); });
+  const CheckReport twice =
+      check_edited([&](std::vector<LogRecord>& v) { v.insert(v.begin() + second_run, v[second_run]); });
   EXPECT_EQ(twice.exit_code(), 1) << format_text(twice);
   ASSERT_FALSE(twice.structure.empty());
   EXPECT_EQ(twice.structure[0].channel, kChannelRun);

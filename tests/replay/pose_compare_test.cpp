@@ -59,7 +59,8 @@ TEST(PoseCompare, SpheresNeuronsSensorsAndCounts) {
   EXPECT_FALSE(compare_pose(a, b, c));
   std::vector<std::string> got;
   for (const auto& m : c.mismatches()) got.push_back(m.element + ":" + m.field);
-  EXPECT_EQ(got, (std::vector<std::string>{"sphere 2:sphere_center[2][0]", ":num_neurons", "sensor 1:sensor_value[1]"}));
+  EXPECT_EQ(got,
+            (std::vector<std::string>{"sphere 2:sphere_center[2][0]", ":num_neurons", "sensor 1:sensor_value[1]"}));
 }
 
 }  // namespace

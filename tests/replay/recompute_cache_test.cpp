@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-
 namespace robozoo::replay {
 namespace {
 
@@ -11,7 +10,10 @@ Genome genes(double w) {
   g.id = 5;
   const GenomeLayout l = robot_layout();
   for (int i = 0; i < l.num_inputs + l.num_outputs; ++i)
-    g.nodes.push_back({i, i == l.bias_input ? NodeKind::Bias : i < l.num_inputs ? NodeKind::Input : NodeKind::Output,
+    g.nodes.push_back({i,
+                       i == l.bias_input  ? NodeKind::Bias
+                       : i < l.num_inputs ? NodeKind::Input
+                                          : NodeKind::Output,
                        Activation::SignedSigmoid});
   g.links.push_back({1, 4, 9, w, true, 0});
   return g;

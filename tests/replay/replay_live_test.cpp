@@ -23,8 +23,9 @@ const std::string kUrl = "udpm://239.255.76.67:7667?ttl=0";
 testing::Outcome recorded(const std::string& command, const std::string& recording) {
   const std::string script =
       "ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
-      "(lcm-logger -f --lcm-url='" + kUrl + "&recv_buf_size=4194304' '" + recording +
-      "' >/dev/null 2>&1 & L=\\$!; sleep 1; " + command + "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)";
+      "(lcm-logger -f --lcm-url='" +
+      kUrl + "&recv_buf_size=4194304' '" + recording + "' >/dev/null 2>&1 & L=\\$!; sleep 1; " + command +
+      "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)";
   return run_shell("timeout 120 unshare -n sh -c \"" + script + "\"");
 }
 

@@ -59,7 +59,8 @@ TEST(CppnDot, ActivationLabels) {
 TEST(CppnDot, LinksColouredSizedAndDashedByHand) {
   const std::string dot = cppn_to_dot(genome());
   // weight 2.5 of 5: width 0.6 + 0.5 * 3.4 = 2.30, positive blue, forward (solid)
-  EXPECT_NE(dot.find("n0 -> n20 [color=\"#2b6cb0\", penwidth=2.30, tooltip=\"weight 2.5000\"]"), std::string::npos) << dot;
+  EXPECT_NE(dot.find("n0 -> n20 [color=\"#2b6cb0\", penwidth=2.30, tooltip=\"weight 2.5000\"]"), std::string::npos)
+      << dot;
   // weight -5: widest, red
   EXPECT_NE(dot.find("n20 -> n9 [color=\"#c53030\", penwidth=4.00, tooltip"), std::string::npos) << dot;
   // output back to hidden: recurrent, dashed, no say in the layout

@@ -33,16 +33,20 @@ bool valid(const json& schema, const json& value, std::string& why, const std::s
   }
   if (type == "array") {
     if (!value.is_array()) return why = at + ": not an array", false;
-    if (schema.contains("minItems") && value.size() < schema["minItems"].get<size_t>()) return why = at + ": short", false;
-    if (schema.contains("maxItems") && value.size() > schema["maxItems"].get<size_t>()) return why = at + ": long", false;
+    if (schema.contains("minItems") && value.size() < schema["minItems"].get<size_t>())
+      return why = at + ": short", false;
+    if (schema.contains("maxItems") && value.size() > schema["maxItems"].get<size_t>())
+      return why = at + ": long", false;
     for (size_t i = 0; i < value.size(); ++i)
       if (!valid(schema.at("items"), value[i], why, at + "[" + std::to_string(i) + "]")) return false;
     return true;
   }
   if (type == "integer") {
     if (!value.is_number_integer()) return why = at + ": not an integer", false;
-    if (schema.contains("minimum") && value.get<long long>() < schema["minimum"].get<long long>()) return why = at + ": low", false;
-    if (schema.contains("maximum") && value.get<long long>() > schema["maximum"].get<long long>()) return why = at + ": high", false;
+    if (schema.contains("minimum") && value.get<long long>() < schema["minimum"].get<long long>())
+      return why = at + ": low", false;
+    if (schema.contains("maximum") && value.get<long long>() > schema["maximum"].get<long long>())
+      return why = at + ": high", false;
     return true;
   }
   if (type == "number") return value.is_number() || (why = at + ": not a number", false);
@@ -53,8 +57,9 @@ bool valid(const json& schema, const json& value, std::string& why, const std::s
 
 TEST(LcmJsonSchema, HandWrittenTypeGivesTheExpectedSchema) {
   const std::map<std::string, std::string> sources = {
-      {"a_t", "package p;\n// a comment\nstruct a_t {\n  int8_t k; // kind\n  double v[2][n];\n  int32_t n;\n"
-              "  b_t inner;\n}\n"},
+      {"a_t",
+       "package p;\n// a comment\nstruct a_t {\n  int8_t k; // kind\n  double v[2][n];\n  int32_t n;\n"
+       "  b_t inner;\n}\n"},
       {"b_t", "package p; struct b_t { boolean on; string name; /* block */ }"}};
   const json want = json::parse(R"({
     "title": "robozoo.a_t", "type": "object", "additionalProperties": false,
@@ -76,8 +81,8 @@ TEST(LcmJsonSchema, UnknownTypesAndUnreadableDeclarationsAreErrors) {
 }
 
 TEST(LcmJsonSchema, EveryRobozooTypeIsEmbedded) {
-  for (const char* t : {"run_t", "generation_t", "cppn_genome_t", "cppn_node_t", "link_t", "morphology_t", "sphere_t",
-                        "pose_t"})
+  for (const char* t :
+       {"run_t", "generation_t", "cppn_genome_t", "cppn_node_t", "link_t", "morphology_t", "sphere_t", "pose_t"})
     EXPECT_NO_THROW(lcm_json_schema(t)) << t;
   EXPECT_EQ(lcm_type_of_channel("ROBOZOO_POSE"), "pose_t");
   EXPECT_EQ(lcm_type_of_channel("ROBOZOO_GENOME"), "cppn_genome_t");

@@ -108,7 +108,7 @@ TEST(LogIndex, UndecodableAndOrphanEventsAreProblemsNotCrashes) {
   b.add(kChannelRun, run("r"))
       .add(kChannelGenome, pose("r", 0, 1, 0))  // a pose on the genome channel: wrong fingerprint
       .raw(kChannelGenome, truncated)
-      .add(kChannelPose, pose("r", 0, 1, 0))    // its genome never made it
+      .add(kChannelPose, pose("r", 0, 1, 0))  // its genome never made it
       .add(kChannelMorphology, morphology("q", 0, 1))
       .raw(kChannelRun, {});
   const LogIndex ix = index_log(b.log);

@@ -210,7 +210,8 @@ TEST(Player, PublishFailuresAreCounted) {
   SyntheticLog s;
   const LogIndex ix = index_log(s.log);
   FakeClock clock(100.0);
-  const PlayStats stats = play(s.log, ix, {}, clock, [](const std::string&, const std::vector<uint8_t>&) { return false; });
+  const PlayStats stats =
+      play(s.log, ix, {}, clock, [](const std::string&, const std::vector<uint8_t>&) { return false; });
   EXPECT_EQ(stats.publish_failures, stats.events_sent);
 }
 

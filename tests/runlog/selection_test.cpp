@@ -45,7 +45,7 @@ TEST(Selection, BestOfRunTopAndGeneration) {
   auto a = run_with("a", {5, 15, 17, 17, 16}, {1, 2, 3, 3, 4});  // generation 3 copies generation 2
   auto b = run_with("b", {5, 20}, {1, 2});
   const std::vector<const RunRecord*> runs = {a->runs()[0].get(), b->runs()[0].get()};
-  EXPECT_EQ(ids(best_of_run(runs)), (std::vector<int64_t>{102, 101}));  // ties: the earliest
+  EXPECT_EQ(ids(best_of_run(runs)), (std::vector<int64_t>{102, 101}));                 // ties: the earliest
   EXPECT_EQ(ids(top_champions({runs[0]}, 3)), (std::vector<int64_t>{102, 104, 101}));  // copy counted once
   EXPECT_EQ(ids(top_champions({runs[0]}, 100)).size(), 4u);
   EXPECT_EQ(ids(generation_champions(runs, 1)), (std::vector<int64_t>{101, 101}));

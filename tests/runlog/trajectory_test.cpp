@@ -27,7 +27,8 @@ TEST(Trajectory, InterpolatesBetweenPosesAndClampsAtTheEnds) {
 TEST(Trajectory, RejectsBadStreams) {
   EXPECT_THROW(trajectory_from_poses({}, 4), std::invalid_argument);
   EXPECT_THROW(trajectory_from_poses({render::testing::pose_message("r", 0, 1, 0, 0, 3)}, 4), std::invalid_argument);
-  EXPECT_THROW(trajectory_from_poses({render::testing::pose_message("r", 0, 1, 5), render::testing::pose_message("r", 0, 1, 5)}, 4),
+  EXPECT_THROW(trajectory_from_poses(
+                   {render::testing::pose_message("r", 0, 1, 5), render::testing::pose_message("r", 0, 1, 5)}, 4),
                std::invalid_argument);
 }
 

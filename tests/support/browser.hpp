@@ -72,13 +72,25 @@ class HeadlessBrowser {
       const std::string size = "--window-size=" + std::to_string(w) + "," + std::to_string(h);
       const std::string profile = "--user-data-dir=" + profile_dir;
       const std::string exe = chromium_path();
-      std::vector<const char*> argv = {exe.c_str(), "--headless", "--no-sandbox", "--remote-debugging-pipe",
-                                       "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                                       "--ignore-gpu-blocklist", "--no-first-run", "--no-default-browser-check",
-                                       "--disable-extensions", "--disable-background-networking",
-                                       "--disable-renderer-backgrounding", "--disable-background-timer-throttling",
-                                       "--disable-backgrounding-occluded-windows", "--hide-scrollbars",
-                                       "--force-device-scale-factor=1", size.c_str(), profile.c_str(), "about:blank",
+      std::vector<const char*> argv = {exe.c_str(),
+                                       "--headless",
+                                       "--no-sandbox",
+                                       "--remote-debugging-pipe",
+                                       "--use-angle=swiftshader",
+                                       "--enable-unsafe-swiftshader",
+                                       "--ignore-gpu-blocklist",
+                                       "--no-first-run",
+                                       "--no-default-browser-check",
+                                       "--disable-extensions",
+                                       "--disable-background-networking",
+                                       "--disable-renderer-backgrounding",
+                                       "--disable-background-timer-throttling",
+                                       "--disable-backgrounding-occluded-windows",
+                                       "--hide-scrollbars",
+                                       "--force-device-scale-factor=1",
+                                       size.c_str(),
+                                       profile.c_str(),
+                                       "about:blank",
                                        nullptr};
       ::execvp(argv[0], const_cast<char* const*>(argv.data()));
       ::_exit(127);
@@ -122,9 +134,9 @@ class HeadlessBrowser {
       if (n <= 0) throw std::runtime_error("the browser is gone (writing " + method + ")");
       done += static_cast<size_t>(n);
     }
-    const auto deadline = std::chrono::steady_clock::now() +
-                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                              std::chrono::duration<double>(timeout));
+    const auto deadline =
+        std::chrono::steady_clock::now() +
+        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeout));
     for (;;) {
       const nlohmann::json reply = next_message(deadline, method);
       if (reply.contains("id") && reply["id"] == id) {
@@ -145,8 +157,8 @@ class HeadlessBrowser {
 
   /// The value of a JavaScript expression in a tab (JSON-able values).
   nlohmann::json evaluate(const std::string& session, const std::string& expression) {
-    const nlohmann::json r =
-        call("Runtime.evaluate", {{"expression", expression}, {"returnByValue", true}, {"awaitPromise", true}}, session);
+    const nlohmann::json r = call(
+        "Runtime.evaluate", {{"expression", expression}, {"returnByValue", true}, {"awaitPromise", true}}, session);
     if (r.contains("exceptionDetails")) throw std::runtime_error(expression + ": " + r["exceptionDetails"].dump());
     return r["result"].value("value", nlohmann::json());
   }
@@ -168,7 +180,8 @@ class HeadlessBrowser {
         buffer_.erase(0, end + 1);
         return nlohmann::json::parse(text);
       }
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
       if (left.count() <= 0) throw std::runtime_error("no reply from the browser to " + waiting_for);
       pollfd p{in_, POLLIN, 0};
       if (::poll(&p, 1, static_cast<int>(left.count())) <= 0) continue;

@@ -9,15 +9,14 @@
 namespace robozoo::testing {
 
 // A small run that still sends robots to the simulator: 4 generations of 24.
-inline const std::vector<std::string> kSmall = {"--seed", "7", "--population", "24", "--generations", "4",
-                                                "--steps", "400", "--quiet"};
+inline const std::vector<std::string> kSmall = {"--seed", "7",       "--population", "24",     "--generations",
+                                                "4",      "--steps", "400",          "--quiet"};
 
 // A run long enough (about 1.5 s on 2 cores) to be interrupted at several moments.
-inline const std::vector<std::string> kLonger = {"--seed", "7", "--population", "40", "--generations", "8",
-                                                 "--steps", "1000", "--quiet"};
+inline const std::vector<std::string> kLonger = {"--seed", "7",       "--population", "40",     "--generations",
+                                                 "8",      "--steps", "1000",         "--quiet"};
 
-inline std::vector<std::string> evolve_args(const std::string& log, int workers,
-                                            std::vector<std::string> extra = {},
+inline std::vector<std::string> evolve_args(const std::string& log, int workers, std::vector<std::string> extra = {},
                                             const std::vector<std::string>& size = kSmall) {
   std::vector<std::string> a = {bin("robozoo-evolve"), "--log", log, "--workers", std::to_string(workers)};
   a.insert(a.end(), size.begin(), size.end());

@@ -16,8 +16,9 @@ namespace robozoo::testing {
 /// messages are copied through the shared segment (no CMA single copy, which needs
 /// ptrace rights that containers often withhold).
 inline std::vector<std::string> mpirun_args(int np) {
-  std::vector<std::string> a = {"/usr/bin/mpirun", "--oversubscribe", "--mca", "btl_vader_single_copy_mechanism",
-                                "none", "-np", std::to_string(np)};
+  std::vector<std::string> a = {
+      "/usr/bin/mpirun", "--oversubscribe", "--mca", "btl_vader_single_copy_mechanism", "none", "-np",
+      std::to_string(np)};
   if (::geteuid() == 0) a.insert(a.begin() + 1, "--allow-run-as-root");
   return a;
 }

@@ -29,9 +29,9 @@ inline void rerun_in_private_network(const std::string& test, int timeout_s, boo
   char self[4096] = {0};
   ASSERT_GT(::readlink("/proc/self/exe", self, sizeof self - 1), 0);
   const std::string route = multicast_route ? "ip route add 224.0.0.0/4 dev lo && " : "";
-  const Outcome o = run_shell("timeout " + std::to_string(timeout_s) + " unshare -n sh -c 'ip link set lo up && " +
-                              route + "ROBOZOO_PRIVATE_NETWORK=1 exec " + std::string(self) +
-                              " --gtest_filter=" + test + "'");
+  const Outcome o =
+      run_shell("timeout " + std::to_string(timeout_s) + " unshare -n sh -c 'ip link set lo up && " + route +
+                "ROBOZOO_PRIVATE_NETWORK=1 exec " + std::string(self) + " --gtest_filter=" + test + "'");
   EXPECT_EQ(o.status, 0) << o.output;
   EXPECT_NE(o.output.find("[  PASSED  ] 1 test"), std::string::npos) << o.output;
   std::istringstream lines(o.output);
@@ -43,10 +43,9 @@ inline void rerun_in_private_network(const std::string& test, int timeout_s, boo
 }  // namespace robozoo::testing
 
 /// Outside the namespace: runs the current test inside one and returns.
-#define RUN_IN_PRIVATE_NETWORK(timeout_s, multicast_route)                                                \
-  if (!::robozoo::testing::inside_private_network()) {                                                    \
-    const auto* info_ = ::testing::UnitTest::GetInstance()->current_test_info();                          \
-    return ::robozoo::testing::rerun_in_private_network(std::string(info_->test_suite_name()) + "." +     \
-                                                            info_->name(),                                \
-                                                        timeout_s, multicast_route);                      \
+#define RUN_IN_PRIVATE_NETWORK(timeout_s, multicast_route)                                                           \
+  if (!::robozoo::testing::inside_private_network()) {                                                               \
+    const auto* info_ = ::testing::UnitTest::GetInstance()->current_test_info();                                     \
+    return ::robozoo::testing::rerun_in_private_network(std::string(info_->test_suite_name()) + "." + info_->name(), \
+                                                        timeout_s, multicast_route);                                 \
   }

@@ -22,7 +22,7 @@ namespace robozoo::testing {
 inline std::string bin(const std::string& name) { return std::string(ROBOZOO_BIN_DIR) + "/" + name; }
 
 struct Outcome {
-  int status = -1;  ///< exit status, or 128 + signal
+  int status = -1;     ///< exit status, or 128 + signal
   std::string output;  ///< stdout and stderr together
 };
 

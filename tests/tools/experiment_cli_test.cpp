@@ -77,8 +77,8 @@ TEST(ExperimentCli, AFinishedExperimentIsNotRedone) {
 
 TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
   TempDir dir, ref;
-  const std::vector<std::string> sizes = {"--trials", "1", "--population", "16", "--generations", "4", "--steps",
-                                          "300"};
+  const std::vector<std::string> sizes = {"--trials",      "1", "--population", "16",
+                                          "--generations", "4", "--steps",      "300"};
   const pid_t pid = spawn(driver(dir.path, sizes), dir / "driver1.txt");
   // Stop it (as Ctrl-C would) once the first trial is finished and the second has begun.
   const std::string ff_cp = dir / "feedforward-s1.lcmlog.checkpoint";
@@ -106,9 +106,9 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
   EXPECT_TRUE(read_checkpoint(rec_cp).finished);
 
   // The resumed trial equals an uninterrupted run, message for message.
-  const auto reference = run_shell(join({bin("robozoo-evolve"), "--log", ref / "rec.lcmlog", "--regime", "recurrent",
-                                          "--seed", "2", "--population", "16", "--generations", "4", "--steps", "300",
-                                          "--workers", "1", "--quiet"}));
+  const auto reference =
+      run_shell(join({bin("robozoo-evolve"), "--log", ref / "rec.lcmlog", "--regime", "recurrent", "--seed", "2",
+                      "--population", "16", "--generations", "4", "--steps", "300", "--workers", "1", "--quiet"}));
   ASSERT_EQ(reference.status, 0) << reference.output;
   EXPECT_EQ(first_log_difference(read_event_log(dir / "recurrent-s2.lcmlog"), read_event_log(ref / "rec.lcmlog")), "");
 }

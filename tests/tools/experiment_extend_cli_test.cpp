@@ -24,8 +24,20 @@ using namespace robozoo::testing;
 namespace fs = std::filesystem;
 
 std::vector<std::string> driver(const std::string& out, int generations, const std::vector<std::string>& extra = {}) {
-  std::vector<std::string> a = {bin("robozoo-experiment"), "--out", out, "--workers", "1", "--progress-interval", "0",
-                                "--trials", "1", "--population", "12", "--steps", "300", "--generations",
+  std::vector<std::string> a = {bin("robozoo-experiment"),
+                                "--out",
+                                out,
+                                "--workers",
+                                "1",
+                                "--progress-interval",
+                                "0",
+                                "--trials",
+                                "1",
+                                "--population",
+                                "12",
+                                "--steps",
+                                "300",
+                                "--generations",
                                 std::to_string(generations)};
   a.insert(a.end(), extra.begin(), extra.end());
   return a;
@@ -56,9 +68,9 @@ TEST(ExperimentExtendCli, MoreGenerationsExtendTheArmsAskedForFromTheirCheckpoin
   EXPECT_TRUE(rec.run.complete());
 
   // The extended trial is the uninterrupted 5-generation run, message for message.
-  const auto reference = run_shell(join({bin("robozoo-evolve"), "--log", ref / "rec.lcmlog", "--regime", "recurrent",
-                                          "--seed", "2", "--population", "12", "--generations", "5", "--steps", "300",
-                                          "--workers", "1", "--run-id", "recurrent-s2", "--quiet"}));
+  const auto reference = run_shell(
+      join({bin("robozoo-evolve"), "--log", ref / "rec.lcmlog", "--regime", "recurrent", "--seed", "2", "--population",
+            "12", "--generations", "5", "--steps", "300", "--workers", "1", "--run-id", "recurrent-s2", "--quiet"}));
   ASSERT_EQ(reference.status, 0) << reference.output;
   const LogContents extended = read_event_log(rec_log), whole = read_event_log(ref / "rec.lcmlog");
   EXPECT_EQ(first_log_difference(run_requested_as(extended, 5), whole), "");

@@ -30,17 +30,25 @@ std::string launcher() {
 }
 
 std::vector<std::string> mpi_driver(const std::string& out, int ranks, const std::vector<std::string>& sizes) {
-  std::vector<std::string> a = {bin("robozoo-experiment"), "--out", out,       "--mpi", std::to_string(ranks),
-                                "--mpirun",                launcher(), "--progress-interval", "0"};
+  std::vector<std::string> a = {
+      bin("robozoo-experiment"), "--out", out, "--mpi", std::to_string(ranks), "--mpirun", launcher(),
+      "--progress-interval",     "0"};
   a.insert(a.end(), sizes.begin(), sizes.end());
   return a;
 }
 
 /// The same trial run locally by robozoo-evolve with one worker.
-LogContents local_trial(const TempDir& dir, const std::string& regime,
-                                     const std::vector<std::string>& sizes) {
-  std::vector<std::string> a = {bin("robozoo-evolve"), "--log", dir / (regime + ".lcmlog"), "--regime", regime,
-                                "--seed", regime == "recurrent" ? "2" : "1", "--workers", "1", "--quiet"};
+LogContents local_trial(const TempDir& dir, const std::string& regime, const std::vector<std::string>& sizes) {
+  std::vector<std::string> a = {bin("robozoo-evolve"),
+                                "--log",
+                                dir / (regime + ".lcmlog"),
+                                "--regime",
+                                regime,
+                                "--seed",
+                                regime == "recurrent" ? "2" : "1",
+                                "--workers",
+                                "1",
+                                "--quiet"};
   a.insert(a.end(), sizes.begin(), sizes.end());
   const auto r = run_shell(join(a));
   EXPECT_EQ(r.status, 0) << r.output;
@@ -49,8 +57,8 @@ LogContents local_trial(const TempDir& dir, const std::string& regime,
 
 TEST(ExperimentMpiCli, TrialsRunAsMpiJobsAndEqualLocalTrials) {
   TempDir dir, ref;
-  const auto r = run_shell(join(mpi_driver(dir.path, 3, {"--trials", "1", "--population", "10", "--generations", "2",
-                                                          "--steps", "200"})));
+  const auto r = run_shell(
+      join(mpi_driver(dir.path, 3, {"--trials", "1", "--population", "10", "--generations", "2", "--steps", "200"})));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("MPI jobs of 3 ranks"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("-np 3 " + bin("robozoo-evolve") + " --log"), std::string::npos) << r.output;
@@ -90,13 +98,12 @@ TEST(ExperimentMpiCli, AStoppedMpiExperimentLeavesNoRankAndResumesOnOtherRanks) 
   // Resumed with 3 ranks: the stopped trial ends equal to an uninterrupted local run.
   const auto resumed = run_shell(join(mpi_driver(dir.path, 3, sizes)));
   ASSERT_EQ(resumed.status, 0) << resumed.output;
-  EXPECT_NE(resumed.output.find("1 finished (skipped), 1 to resume, 0 to start"), std::string::npos)
-      << resumed.output;
+  EXPECT_NE(resumed.output.find("1 finished (skipped), 1 to resume, 0 to start"), std::string::npos) << resumed.output;
   EXPECT_NE(resumed.output.find("recurrent-s2: resuming after generation"), std::string::npos) << resumed.output;
   EXPECT_TRUE(read_checkpoint(rec_cp).finished);
-  EXPECT_EQ(first_log_difference(read_event_log(dir / "recurrent-s2.lcmlog"),
-                                 local_trial(ref, "recurrent", evolve_sizes)),
-            "");
+  EXPECT_EQ(
+      first_log_difference(read_event_log(dir / "recurrent-s2.lcmlog"), local_trial(ref, "recurrent", evolve_sizes)),
+      "");
 }
 
 TEST(ExperimentMpiCli, BadMpiSettingsAreRefusedBeforeAnythingRuns) {
@@ -135,11 +142,10 @@ TEST(ExperimentMpiCli, AFailedMpiJobIsReportedWithItsLastWords) {
     f << "#!/bin/sh\necho \"fake-mpirun: not enough slots for $2 ranks\"\nexit 1\n";
   }
   ::chmod(fake.c_str(), 0755);
-  const auto r = run_shell(join({bin("robozoo-experiment"), "--out", dir / "exp", "--trials", "1", "--population",
-                                  "10", "--generations", "2", "--mpi", "4", "--mpirun", fake}));
+  const auto r = run_shell(join({bin("robozoo-experiment"), "--out", dir / "exp", "--trials", "1", "--population", "10",
+                                 "--generations", "2", "--mpi", "4", "--mpirun", fake}));
   EXPECT_EQ(r.status, 1) << r.output;
-  EXPECT_NE(r.output.find("the MPI job of robozoo-evolve failed on feedforward-s1 (exit status 1)"),
-            std::string::npos)
+  EXPECT_NE(r.output.find("the MPI job of robozoo-evolve failed on feedforward-s1 (exit status 1)"), std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("fake-mpirun: not enough slots for 4 ranks"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("recurrent-s2: starting"), std::string::npos) << r.output;

@@ -22,8 +22,8 @@ const std::string kUrl = "udpm://239.255.76.67:7667?ttl=0";
 
 // Population 30, 3 generations of 600 steps: each new champion's trajectory is
 // 151 poses at the default --pose-every 4, five times LCM's queue of 31.
-const std::vector<std::string> kRun = {"--seed", "1", "--population", "30", "--generations", "3",
-                                       "--steps", "600", "--quiet"};
+const std::vector<std::string> kRun = {"--seed", "1",       "--population", "30",     "--generations",
+                                       "3",      "--steps", "600",          "--quiet"};
 
 /// Runs `inner` (a shell script) in a private network namespace with multicast
 /// on the loopback interface.
@@ -35,7 +35,8 @@ testing::Outcome in_namespace(const std::string& inner) {
 /// `feed` (shell) while lcm-logger records the bus into `recording`.
 testing::Outcome record(const std::string& feed, const std::string& recording) {
   return in_namespace("(lcm-logger -q -f --lcm-url='" + kUrl + "' '" + recording +
-                      "' >/dev/null 2>&1 & L=\\$!; sleep 1; " + feed + "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)");
+                      "' >/dev/null 2>&1 & L=\\$!; sleep 1; " + feed +
+                      "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)");
 }
 
 /// robozoo-log bus SENT RECORDED: the recording holds every robozoo event sent.
@@ -43,8 +44,8 @@ void expect_whole(const std::string& sent, const std::string& recording) {
   const auto o = run_shell(bin("robozoo-log") + " bus '" + sent + "' '" + recording + "'");
   const size_t poses = count_channel(read_event_log(sent), kChannelPose);
   ASSERT_GT(poses, 151u) << "the run should have published more than one trajectory";
-  EXPECT_EQ(o.status, 0) << o.output << "(" << count_channel(read_event_log(recording), kChannelPose) << " of "
-                         << poses << " poses recorded)";
+  EXPECT_EQ(o.status, 0) << o.output << "(" << count_channel(read_event_log(recording), kChannelPose) << " of " << poses
+                         << " poses recorded)";
   EXPECT_NE(o.output.find(", missing 0"), std::string::npos) << o.output;
 }
 

@@ -22,9 +22,9 @@ class LogCppn : public ::testing::Test {
     dir = fs::temp_directory_path() / ("robozoo_log_cppn_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     log = dir / "run.lcmlog";
-    const Outcome o = run_shell(join(evolve_args(
-        log.string(), 2, {"--regime", "recurrent"},
-        {"--seed", "3", "--population", "10", "--generations", "2", "--steps", "200", "--quiet"})));
+    const Outcome o = run_shell(
+        join(evolve_args(log.string(), 2, {"--regime", "recurrent"},
+                         {"--seed", "3", "--population", "10", "--generations", "2", "--steps", "200", "--quiet"})));
     ASSERT_EQ(o.status, 0) << o.output;
   }
   static void TearDownTestSuite() { fs::remove_all(dir); }
@@ -35,8 +35,8 @@ class LogCppn : public ::testing::Test {
 
 /// The champion of the last generation, from robozoo-log cat.
 int64_t last_champion() {
-  const Outcome o = run_shell("'" + bin("robozoo-log") + "' cat '" + LogCppn::log.string() +
-                              "' --channel generation | tail -n 1");
+  const Outcome o =
+      run_shell("'" + bin("robozoo-log") + "' cat '" + LogCppn::log.string() + "' --channel generation | tail -n 1");
   const size_t at = o.output.find("\"champion_id\":");
   EXPECT_NE(at, std::string::npos) << o.output;
   return std::stoll(o.output.substr(at + 14));

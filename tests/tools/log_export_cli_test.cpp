@@ -36,7 +36,8 @@ class LogExport : public ::testing::Test {
 
   static void SetUpTestSuite() {
     fs::create_directories(work_dir());
-    const Outcome npm = run_shell("'" + source("tools/npm_deps.sh") + "' '" + std::string(ROBOZOO_BIN_DIR) + "/../npm'");
+    const Outcome npm =
+        run_shell("'" + source("tools/npm_deps.sh") + "' '" + std::string(ROBOZOO_BIN_DIR) + "/../npm'");
     ASSERT_EQ(npm.status, 0) << npm.output;
     node_modules = npm.output.substr(npm.output.rfind('\n', npm.output.size() - 2) + 1);
     while (!node_modules.empty() && node_modules.back() == '\n') node_modules.pop_back();
@@ -75,8 +76,8 @@ class LogExport : public ::testing::Test {
     const fs::path log = log_of(name);
     const fs::path out = work_dir() / (name + "-" + compression + ".mcap");
     const fs::path summary = work_dir() / (name + "-summary.json");
-    const Outcome s = run_shell("'" + bin("robozoo-log") + "' summary --json '" + log.string() + "' > '" +
-                                summary.string() + "'");
+    const Outcome s =
+        run_shell("'" + bin("robozoo-log") + "' summary --json '" + log.string() + "' > '" + summary.string() + "'");
     EXPECT_EQ(s.status, 0) << s.output;
     const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + log.string() + "' -o '" + out.string() +
                                 "' --compression " + compression + " --chunk-kib 64");
@@ -173,7 +174,8 @@ TEST_F(LogExport, DamagedLogIsRefusedWithOneLine) {
   fs::copy_file(log_of("recurrent"), damaged, fs::copy_options::overwrite_existing);
   fs::resize_file(damaged, fs::file_size(damaged) - 100);  // the last event cut
   const fs::path out = work_dir() / "damaged.mcap";
-  const Outcome e = run_shell("'" + bin("robozoo-log") + "' export '" + damaged.string() + "' -o '" + out.string() + "'");
+  const Outcome e =
+      run_shell("'" + bin("robozoo-log") + "' export '" + damaged.string() + "' -o '" + out.string() + "'");
   EXPECT_NE(e.status, 0);
   EXPECT_NE(e.output.find("damaged"), std::string::npos) << e.output;
   EXPECT_EQ(std::count(e.output.begin(), e.output.end(), '\n'), 1) << e.output;

@@ -23,8 +23,8 @@ const std::vector<std::string> kSizes = {"--population", "10", "--steps", "200"}
 
 /// A run of 1000 generations stopped once its checkpoint holds two: unfinished.
 void write_unfinished_run(const std::string& log, const TempDir& dir) {
-  std::vector<std::string> a = {bin("robozoo-evolve"), "--log",     log,       "--regime", "recurrent", "--seed", "4",
-                                "--workers",           "1",         "--quiet", "--generations", "1000"};
+  std::vector<std::string> a = {bin("robozoo-evolve"), "--log", log,       "--regime",      "recurrent", "--seed", "4",
+                                "--workers",           "1",     "--quiet", "--generations", "1000"};
   a.insert(a.end(), kSizes.begin(), kSizes.end());
   const pid_t pid = spawn(a, dir / "evolve.txt");
   bool two = false;
@@ -49,7 +49,7 @@ TEST(MpiBenchCli, ResumeMeasuresTheNextGenerationsOfALoggedRunOnACopy) {
   const std::string log_bytes = read_file(log), checkpoint_bytes = read_file(log + ".checkpoint");
 
   const auto r = run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log, "--generations", "2",
-                                                  "--project", "4", "--json", dir / "b.json"})));
+                                                 "--project", "4", "--json", dir / "b.json"})));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("generations " + std::to_string(at) + "-" + std::to_string(at + 1) + " of " + log),
             std::string::npos)
@@ -83,8 +83,7 @@ TEST(MpiBenchCli, ResumeRefusesAFinishedRunAndFlagsOfAnotherRun) {
   const auto seed = run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", log, "--seed", "3"})));
   EXPECT_NE(seed.status, 0);
   EXPECT_NE(seed.output.find("excludes"), std::string::npos) << seed.output;
-  const auto missing =
-      run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", dir / "none.lcmlog"})));
+  const auto missing = run_shell(join(under_mpirun(2, {bin("robozoo-mpi-bench"), "--resume", dir / "none.lcmlog"})));
   EXPECT_NE(missing.status, 0);
   EXPECT_NE(missing.output.find("no file"), std::string::npos) << missing.output;
   // --log names where the copy goes: an existing file there is not overwritten.

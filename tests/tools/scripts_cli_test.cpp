@@ -31,8 +31,8 @@ std::vector<fs::path> scripts() {
 
 // The sbatch script checks the flags it passes on with this build's robozoo-evolve.
 Outcome run_script(const fs::path& script, const std::string& args) {
-  return run_shell("env ROBOZOO_BIN='" + std::string(ROBOZOO_BIN_DIR) + "' timeout 60 bash '" + script.string() +
-                   "' " + args + " </dev/null");
+  return run_shell("env ROBOZOO_BIN='" + std::string(ROBOZOO_BIN_DIR) + "' timeout 60 bash '" + script.string() + "' " +
+                   args + " </dev/null");
 }
 
 }  // namespace
@@ -53,7 +53,7 @@ TEST(ScriptsCli, EveryScriptAnswersHelp) {
     const Outcome o = run_script(s, "--help");
     EXPECT_EQ(o.status, 0) << s << ":\n" << o.output;
     EXPECT_NE(o.output.find(s.filename().string()), std::string::npos) << s << ": usage does not name it:\n"
-                                                                        << o.output;
+                                                                       << o.output;
   }
 }
 

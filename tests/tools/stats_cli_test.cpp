@@ -121,7 +121,8 @@ TEST(StatsCli, HandMadeLogsGiveTheStatisticsWorkedOutByHand) {
   EXPECT_NE(report.find("| 50.00 ± 50.00 % (2) | 75.00 ± 25.00 % (2) |"), std::string::npos) << report;
   EXPECT_EQ(report.rfind("# robozoo: recurrent vs feed-forward CPPNs\n\nThe paper's fitness result (recurrent CPPNs "
                          "fitter) is **inconclusive** at generation 2 (the last) with 2 feed-forward and 2 recurrent "
-                         "runs", 0),
+                         "runs",
+                         0),
             0u)
       << report;
   EXPECT_NE(report.find("robozoo-render is missing (looked for /nonexistent/robozoo-render)"), std::string::npos);
@@ -172,7 +173,8 @@ TEST(StatsCli, UnfinishedRunsAreLeftOutUnlessAskedFor) {
   auto runs = read_csv(dir / "stats/runs.csv");
   EXPECT_EQ(runs.size(), 4u);
   std::string report = read_file(dir / "stats/report.md");
-  EXPECT_NE(report.find("Left out: recurrent-s9.lcmlog: unfinished (3 of 10 generations)"), std::string::npos) << report;
+  EXPECT_NE(report.find("Left out: recurrent-s9.lcmlog: unfinished (3 of 10 generations)"), std::string::npos)
+      << report;
   EXPECT_NE(report.find("Left out: broken.lcmlog"), std::string::npos);
 
   o = run_shell(stats("'" + dir.path + "' --no-plots --no-zoo --include-unfinished"));

@@ -28,9 +28,9 @@ std::vector<std::string> files_in(const std::string& dir) {
 TEST(StatsResultsCli, CompactResultsGiveTheReportOfTheLogsByteForByte) {
   TempDir logs_home, results_home, reports;
   const std::string exp = logs_home / "exp";
-  const auto run = run_shell(join({bin("robozoo-experiment"), "--out", exp, "--trials", "2", "--population", "12",
-                                   "--generations", "4", "--steps", "300", "--workers", "1", "--progress-interval",
-                                   "0"}));
+  const auto run =
+      run_shell(join({bin("robozoo-experiment"), "--out", exp, "--trials", "2", "--population", "12", "--generations",
+                      "4", "--steps", "300", "--workers", "1", "--progress-interval", "0"}));
   ASSERT_EQ(run.status, 0) << run.output;
   // One compact result per trial, in OUT/results.
   const std::vector<std::string> results = files_in(exp + "/results");
@@ -41,8 +41,8 @@ TEST(StatsResultsCli, CompactResultsGiveTheReportOfTheLogsByteForByte) {
   for (const auto& f : results) fs::copy_file(exp + "/results/" + f, results_home / "exp/" + f);
 
   const std::string flags = " --no-zoo --note 'a note'";
-  const auto a = run_shell("cd '" + logs_home.path + "' && " + bin("robozoo-stats") + " exp --out '" +
-                           (reports / "A") + "'" + flags);
+  const auto a = run_shell("cd '" + logs_home.path + "' && " + bin("robozoo-stats") + " exp --out '" + (reports / "A") +
+                           "'" + flags);
   ASSERT_EQ(a.status, 0) << a.output;
   const auto b = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --out '" +
                            (reports / "B") + "'" + flags);
@@ -54,8 +54,7 @@ TEST(StatsResultsCli, CompactResultsGiveTheReportOfTheLogsByteForByte) {
   EXPECT_GE(fa.size(), 15u);
   for (const auto& f : fa) EXPECT_EQ(read_file(reports / "A/" + f), read_file(reports / "B/" + f)) << f;
   // The report has what only the checkpoints (next to the logs) know: robozoo-evolve's time.
-  EXPECT_NE(read_file(reports / "B/report.md").find("of wall time on the 4 runs with a checkpoint"),
-            std::string::npos);
+  EXPECT_NE(read_file(reports / "B/report.md").find("of wall time on the 4 runs with a checkpoint"), std::string::npos);
 
   // With zoo sheets asked for, a folder of compact results says why there is none.
   const auto zoo = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --no-plots --out '" +
@@ -78,9 +77,7 @@ TEST(StatsResultsCli, AFolderWithoutLogsOrResultsIsAnError) {
   std::ofstream(d / "x.results.json") << "{\"format\": \"robozoo-run-results\", \"version\": 1}";
   const auto bad = run_shell(bin("robozoo-stats") + " '" + d.path + "' --no-plots --no-zoo");
   EXPECT_EQ(bad.status, 2) << bad.output;
-  EXPECT_NE(bad.output.find(d.path + "/x.results.json: results.run: missing"),
-            std::string::npos)
-      << bad.output;
+  EXPECT_NE(bad.output.find(d.path + "/x.results.json: results.run: missing"), std::string::npos) << bad.output;
 }
 
 }  // namespace

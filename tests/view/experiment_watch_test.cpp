@@ -81,9 +81,9 @@ TEST(ExperimentWatch, ReadsTheFolderAndFollowsGrowingLogs) {
   TempDir d;
   const std::string ff1 = d / "feedforward-s1.lcmlog", rec2 = d / "recurrent-s2.lcmlog";
   const std::string ff5 = d / "feedforward-s5.lcmlog", rec6 = d / "recurrent-s6.lcmlog";
-  write_trial(ff1, {1.0, 1.1}, 2);        // finished
-  write_trial(rec2, {5.0, 5.1}, 2);       // finished
-  write_trial(ff5, {1.05});               // stopped: old, without a checkpoint
+  write_trial(ff1, {1.0, 1.1}, 2);   // finished
+  write_trial(rec2, {5.0, 5.1}, 2);  // finished
+  write_trial(ff5, {1.05});          // stopped: old, without a checkpoint
   fs::last_write_time(ff5, fs::file_time_type::clock::now() - std::chrono::hours(1));
   // recurrent-s6 grows: first its first generation and half of its second event.
   write_trial(d / "full.tmp", {5.1, 6.0, 7.0});
@@ -116,7 +116,7 @@ TEST(ExperimentWatch, ReadsTheFolderAndFollowsGrowingLogs) {
   // Generation 0 of feedforward: {1.0, 1.05}: mean 1.025, s.d. 0.05/sqrt(2), s.e. 0.05/sqrt(2)/sqrt(2) = 0.025.
   EXPECT_NEAR(s["arms"][0]["mean"][0].get<double>(), 1.025, 1e-12);
   EXPECT_NEAR(s["arms"][0]["se"][0].get<double>(), 0.025, 1e-12);
-  EXPECT_TRUE(s["arms"][0]["se"][1].is_null());                 // one trial at generation 1
+  EXPECT_TRUE(s["arms"][0]["se"][1].is_null());  // one trial at generation 1
   // Generation 0: {1.0, 1.05} against {5.0, 5.1}: p far below 0.05; generation 1: one feedforward trial.
   ASSERT_EQ(s["tests"].size(), 1u);
   EXPECT_EQ(s["tests"][0]["significant"], nlohmann::json::array({0}));
@@ -125,7 +125,7 @@ TEST(ExperimentWatch, ReadsTheFolderAndFollowsGrowingLogs) {
   EXPECT_EQ(w.log_of("recurrent-s9"), "");
 
   EXPECT_FALSE(w.poll());  // nothing new
-  put(rec6, full);          // the rest arrives
+  put(rec6, full);         // the rest arrives
   EXPECT_TRUE(w.poll());
   t = w.trials();
   EXPECT_EQ(t[3].best_so_far, (std::vector<double>{5.1, 6.0, 7.0}));

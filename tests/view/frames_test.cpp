@@ -15,10 +15,10 @@ cppn_genome_t genome_with_cppn() {
   cppn_genome_t g = genome_message("run", 3, 42, 17.5);
   g.nodes = {{0, 0, 0, 0.0}, {4, 1, 0, 0.0}, {9, 2, 0, 1.0}, {10, 2, 0, 1.0}, {20, 3, 2, 0.5}};
   g.num_nodes = static_cast<int32_t>(g.nodes.size());
-  g.links = {{1, 0, 9, 2.5, true},       // forward, input to output
-             {2, 9, 10, -1.23456, true}, // output to output (recurrent)
-             {3, 4, 20, 0.5, false},     // disabled
-             {4, 20, 20, -4.0, true}};   // self-loop
+  g.links = {{1, 0, 9, 2.5, true},        // forward, input to output
+             {2, 9, 10, -1.23456, true},  // output to output (recurrent)
+             {3, 4, 20, 0.5, false},      // disabled
+             {4, 20, 20, -4.0, true}};    // self-loop
   g.num_links = static_cast<int32_t>(g.links.size());
   return g;
 }

@@ -94,7 +94,8 @@ TEST(ViewServer, RouteAnswersWhatIsNoFileAndOnlyThat) {
   std::vector<std::string> asked;
   o.route = [&asked](const std::string& target) -> std::optional<HttpReply> {
     asked.push_back(target);
-    if (target == "/export?genome=7") return HttpReply{200, "text/html; charset=utf-8", "<p>seven</p>", "champion-7.html"};
+    if (target == "/export?genome=7")
+      return HttpReply{200, "text/html; charset=utf-8", "<p>seven</p>", "champion-7.html"};
     if (target == "/export?genome=8") return HttpReply{404, "text/plain", "no genome 8\n", ""};
     return std::nullopt;
   };

@@ -36,7 +36,8 @@ render::Image keep_png(const std::vector<uint8_t>& png, const std::string& path)
   if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS"))
     paths.push_back(std::string(keep) + "/" + path.substr(path.rfind('/') + 1));
   for (const std::string& p : paths)
-    std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    std::ofstream(p, std::ios::binary)
+        .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   return render::read_png(path);
 }
 
@@ -66,18 +67,28 @@ TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
   HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
   const std::string tab = browser.open("file://" + html);
   auto stats = [&] { return browser.evaluate(tab, "window.robozooView ? robozooView.stats() : null"); };
-  ASSERT_TRUE(wait_for([&] { const auto s = stats(); return !s.is_null() && s["samples"] > 1; }, 60))
-      << stats().dump() << "\n" << read_file(dir / "chromium.txt");
+  ASSERT_TRUE(wait_for(
+      [&] {
+        const auto s = stats();
+        return !s.is_null() && s["samples"] > 1;
+      },
+      60))
+      << stats().dump() << "\n"
+      << read_file(dir / "chromium.txt");
   EXPECT_EQ(browser.evaluate(tab, "document.getElementById('status').textContent"), "offline file");
   EXPECT_EQ(browser.evaluate(tab, "document.getElementById('save-html').hidden"), true);
   // It plays: the page draws again and its clock moves over the samples (a busy machine's
   // software WebGL may take a while between frames).
   const nlohmann::json s0 = stats();
   nlohmann::json s1;
-  EXPECT_TRUE(wait_for([&] {
-    s1 = stats();
-    return s1["frames"].get<int>() > s0["frames"].get<int>() + 2 && s1["simTime"] != s0["simTime"];
-  }, 30)) << s0.dump() << "\n" << s1.dump();
+  EXPECT_TRUE(wait_for(
+      [&] {
+        s1 = stats();
+        return s1["frames"].get<int>() > s0["frames"].get<int>() + 2 && s1["simTime"] != s0["simTime"];
+      },
+      30))
+      << s0.dump() << "\n"
+      << s1.dump();
   EXPECT_GE(s1["chartPoints"].get<int>(), 1);
   keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 800}}), dir / "view-export.png");
   // The robot's pixels: in the 3D view only (the chart has a red line too).
@@ -93,13 +104,14 @@ TEST(ViewShare, ExperimentPageShowsEveryTrialAndFollowsThem) {
   TempDir dir;
   const std::string out = dir / "exp";
   auto experiment = [&](int generations) {
-    return run_shell(join({bin("robozoo-experiment"), "--out", out, "--trials", "2", "--population", "8", "--steps",
-                           "200", "--workers", "1", "--progress-interval", "0", "--generations",
-                           std::to_string(generations)}));
+    return run_shell(
+        join({bin("robozoo-experiment"), "--out", out, "--trials", "2", "--population", "8", "--steps", "200",
+              "--workers", "1", "--progress-interval", "0", "--generations", std::to_string(generations)}));
   };
   const robozoo::testing::Outcome first = experiment(2);
   ASSERT_EQ(first.status, 0) << first.output;
-  const pid_t view = spawn({bin("robozoo-view"), "--experiment", out, "--port", "8080", "--poll", "0.5"}, dir / "view.txt");
+  const pid_t view =
+      spawn({bin("robozoo-view"), "--experiment", out, "--port", "8080", "--poll", "0.5"}, dir / "view.txt");
   ASSERT_TRUE(wait_for([&] { return read_file(dir / "view.txt").find("open http") != std::string::npos; }, 20))
       << read_file(dir / "view.txt");
   HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");

@@ -72,7 +72,8 @@ render::Image decode_png(const std::vector<uint8_t>& png, const std::string& pat
   if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS"))
     paths.push_back(std::string(keep) + "/" + path.substr(path.rfind('/') + 1));
   for (const std::string& p : paths)
-    std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    std::ofstream(p, std::ios::binary)
+        .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   return render::read_png(path);
 }
 
@@ -146,8 +147,8 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   auto stats = [&](const std::string& s) { return page_stats(browser, s); };
   ASSERT_TRUE(wait_for([&] { return page_connected(browser, a); }, 30)) << read_file(dir / "chromium.txt");
 
-  const std::vector<std::string> size = {"--seed", "7", "--population", "24", "--generations", "6",
-                                         "--steps", "600", "--quiet"};
+  const std::vector<std::string> size = {"--seed", "7",       "--population", "24",     "--generations",
+                                         "6",      "--steps", "600",          "--quiet"};
   const pid_t evolve = spawn(evolve_args(dir / "run.lcmlog", 2, {"--lcm-url", kUrl}, size), dir / "evolve.txt");
 
   // Two screenshots half a second apart of one robot with red and blue
@@ -219,7 +220,12 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   HeadlessBrowser late(dir / "profile-late", dir / "chromium-late.txt");
   const std::string b = late.open(kPage);
   auto late_stats = [&] { return page_stats(late, b); };
-  EXPECT_TRUE(wait_for([&] { const auto j = late_stats(); return !j.is_null() && j["chartPoints"] == gens.size(); }, 30))
+  EXPECT_TRUE(wait_for(
+      [&] {
+        const auto j = late_stats();
+        return !j.is_null() && j["chartPoints"] == gens.size();
+      },
+      30))
       << late_stats().dump();
   // Its first stats frame comes one stats interval (1 s) after it joined.
   EXPECT_TRUE(wait_for([&] { return late_stats()["dropped"].is_number(); }, 5)) << late_stats().dump();
@@ -234,7 +240,8 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   EXPECT_GT(p3.blue, 30) << sb.dump();
   std::cout << "live page: " << p1.red << "/" << p2.red << " red, " << p1.blue << "/" << p2.blue << " blue pixels, "
             << changed_pixels(one, two) << " changed, " << changed_sphere_pixels(one, two)
-            << " of them the robot's (pair " << pairs << ", " << resting << " at rest); late page: " << p3.red << " red, " << p3.blue << " blue\n";
+            << " of them the robot's (pair " << pairs << ", " << resting << " at rest); late page: " << p3.red
+            << " red, " << p3.blue << " blue\n";
 
   ASSERT_TRUE(kill_process(view, SIGTERM));
   EXPECT_EQ(wait_status(view), 0);
@@ -253,8 +260,8 @@ class StuckPage {
     ws_.handshake("127.0.0.1:" + std::to_string(port), "/ws");
   }
   static constexpr int kReceiveBuffer = 4096;  // bytes
-  int poses = 0;          ///< pose frames it got
-  int64_t dropped = -1;   ///< the last count of its dropped poses the server sent it
+  int poses = 0;                               ///< pose frames it got
+  int64_t dropped = -1;                        ///< the last count of its dropped poses the server sent it
   void drain() {
     try {
       for (;;) {
@@ -304,19 +311,22 @@ TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
     } catch (...) {  // the view closes when it exits
     }
   });
-  const pid_t evolve = spawn(evolve_args(dir / "run.lcmlog", 2, {"--lcm-url", kUrl, "--pose-every", "1"}), dir / "evolve.txt");
+  const pid_t evolve =
+      spawn(evolve_args(dir / "run.lcmlog", 2, {"--lcm-url", kUrl, "--pose-every", "1"}), dir / "evolve.txt");
   ASSERT_EQ(wait_status(evolve), 0) << read_file(dir / "evolve.txt");
   stuck.drain();  // until the view exits (--idle-exit)
   EXPECT_EQ(wait_status(view), 0);
   reader.join();
   const std::string out = read_file(dir / "view.txt");
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(out, m, std::regex(R"((\d+) messages \((\d+) bad, skipped\).* (\d+) poses, (\d+) poses dropped)")))
+  ASSERT_TRUE(std::regex_search(
+      out, m, std::regex(R"((\d+) messages \((\d+) bad, skipped\).* (\d+) poses, (\d+) poses dropped)")))
       << out;
   const LogContents log = read_event_log(dir / "run.lcmlog");
   // The bus carries the log's messages and one ROBOZOO_BUS status per generation (never logged).
   EXPECT_EQ(std::stoll(m[1]), static_cast<long long>(log.records.size() + count_channel(log, kChannelGeneration)))
-      << "the bus was not read in full\n" << out;
+      << "the bus was not read in full\n"
+      << out;
   EXPECT_EQ(std::stoll(m[2]), 0);
   const long long published = static_cast<long long>(count_channel(log, kChannelPose));
   EXPECT_EQ(std::stoll(m[3]), published);
@@ -331,8 +341,9 @@ TEST(ViewBrowser, SlowPageLosesOldPosesWhileTheBusIsReadInFull) {
   EXPECT_EQ(stuck.poses + stuck.dropped, published) << stuck.poses << " got, " << stuck.dropped << " dropped";
   const size_t buffered = (2 * 64 * 1024 + 2 * StuckPage::kReceiveBuffer) / smallest_pose;
   EXPECT_LE(stuck.poses, kQueuePoses + static_cast<long long>(buffered)) << "its queue was not bounded";
-  std::cout << "reading page: " << poses << " poses got, " << dropped << " dropped; stuck page: " << stuck.poses << " poses got, " << stuck.dropped << " dropped of " << published
-            << " (at most " << kQueuePoses << " + " << buffered << " in the socket buffers)\n";
+  std::cout << "reading page: " << poses << " poses got, " << dropped << " dropped; stuck page: " << stuck.poses
+            << " poses got, " << stuck.dropped << " dropped of " << published << " (at most " << kQueuePoses << " + "
+            << buffered << " in the socket buffers)\n";
   EXPECT_EQ(std::stoll(m[4]), stuck.dropped + dropped) << out;  // the view's count: both pages
 }
 
@@ -376,8 +387,8 @@ void write_swaying_robot(const std::string& path, int n, int steps) {
     for (int i = 0; i < n; ++i) {
       const sphere_t& s = m.spheres[static_cast<size_t>(i)];
       const double phase = p.sim_time * 3.0 + 0.3 * i;
-      p.sphere_center.push_back({s.center[0] + 0.1 * p.sim_time, s.center[1] + 0.1 * std::sin(phase),
-                                 s.center[2] + 0.1 * std::cos(phase)});
+      p.sphere_center.push_back(
+          {s.center[0] + 0.1 * p.sim_time, s.center[1] + 0.1 * std::sin(phase), s.center[2] + 0.1 * std::cos(phase)});
     }
     append(w, kChannelPose, p, 1000);
   }
@@ -388,9 +399,12 @@ void write_swaying_robot(const std::string& path, int n, int steps) {
 double page_frame_rate(HeadlessBrowser& browser, const std::string& session, double seconds) {
   const std::string ms = std::to_string(static_cast<int>(seconds * 1000));
   return browser
-      .evaluate(session, "new Promise((done) => { let n = 0; const t0 = performance.now();"
-                         " const f = () => { n++; if (performance.now() - t0 < " + ms + ") requestAnimationFrame(f);"
-                         " else done(n * 1000 / (performance.now() - t0)); }; requestAnimationFrame(f); })")
+      .evaluate(session,
+                "new Promise((done) => { let n = 0; const t0 = performance.now();"
+                " const f = () => { n++; if (performance.now() - t0 < " +
+                    ms +
+                    ") requestAnimationFrame(f);"
+                    " else done(n * 1000 / (performance.now() - t0)); }; requestAnimationFrame(f); })")
       .get<double>();
 }
 
@@ -415,7 +429,12 @@ TEST(ViewBrowser, FrameRateOfAFiftySphereRobot) {
   HeadlessBrowser browser(dir / "profile", dir / "chromium.txt");
   const std::string a = browser.open(kPage);
   auto stats = [&] { return page_stats(browser, a); };
-  ASSERT_TRUE(wait_for([&] { const auto j = stats(); return !j.is_null() && j["spheres"] >= 40 && j["samples"] > 50; }, 60))
+  ASSERT_TRUE(wait_for(
+      [&] {
+        const auto j = stats();
+        return !j.is_null() && j["spheres"] >= 40 && j["samples"] > 50;
+      },
+      60))
       << stats().dump();
   const auto before = stats();
   const double fps = page_frame_rate(browser, a, 4.0);
@@ -458,7 +477,8 @@ TEST(ViewBrowser, LatencyAndServerCpuWhileEvolvePublishes) {
   const std::string a = browser.open(kPage);
   ASSERT_TRUE(wait_for([&] { return page_connected(browser, a); }, 30)) << read_file(dir / "chromium.txt");
   // ROBOZOO_VIEW_MEASURE_ARGS: other evolve sizes for the figures in docs/performance.md.
-  std::vector<std::string> size = {"--seed", "7", "--population", "24", "--generations", "6", "--steps", "600", "--quiet"};
+  std::vector<std::string> size = {"--seed", "7",       "--population", "24",     "--generations",
+                                   "6",      "--steps", "600",          "--quiet"};
   if (const char* e = std::getenv("ROBOZOO_VIEW_MEASURE_ARGS")) {
     size.clear();
     std::istringstream in(e);
@@ -498,8 +518,8 @@ TEST(ViewBrowser, LatencyAndServerCpuWhileEvolvePublishes) {
   std::cout << "server CPU: " << cpu << " s over " << wall << " s of evolution (" << 100 * cpu / wall
             << " % of a core) for " << m[1] << " messages of " << bus_messages << " published, "
             << count_channel(log, kChannelPose) << " of them poses, " << m[3]
-            << " dropped for the page; pose publication -> drawn: median "
-            << l[l.size() / 2] << " ms, max " << l.back() << " ms over " << l.size() << " champions\n";
+            << " dropped for the page; pose publication -> drawn: median " << l[l.size() / 2] << " ms, max " << l.back()
+            << " ms over " << l.size() << " champions\n";
   // A measurement: no bound on the figures, but they must be real ones. Every
   // message reached the view; a pose is drawn after it was published (the page
   // reads the pose's utime, evolve's clock, against its own on the same host).

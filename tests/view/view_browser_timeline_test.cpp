@@ -46,9 +46,9 @@ cppn_genome_t champion_genome(int32_t generation, int64_t id, int k) {
     g.nodes.push_back({n, static_cast<int8_t>(n < 9 ? (n == 4 ? 1 : 0) : 2), 0, n < 9 ? 0.0 : 1.0});
   g.nodes.push_back({20, 3, 2, 0.5});
   g.nodes.push_back({21, 3, 1, 0.5});
-  g.links = {{1, 0, 9, 2.0, true},    {2, 1, 10, -1.5, true},  {3, 2, 11, 0.7, true},   {4, 3, 20, 4.5, true},
-             {5, 20, 12, -3.0, true}, {6, 4, 21, 1.0, true},   {7, 21, 13, -0.4, true}, {8, 9, 10, 1.2, true},
-             {9, 13, 9, -2.2, true},  {10, 20, 21, 0.9, true}, {11, 21, 21, -1.1, true}, {12, 12, 20, 3.3, true},
+  g.links = {{1, 0, 9, 2.0, true},    {2, 1, 10, -1.5, true},    {3, 2, 11, 0.7, true},    {4, 3, 20, 4.5, true},
+             {5, 20, 12, -3.0, true}, {6, 4, 21, 1.0, true},     {7, 21, 13, -0.4, true},  {8, 9, 10, 1.2, true},
+             {9, 13, 9, -2.2, true},  {10, 20, 21, 0.9, true},   {11, 21, 21, -1.1, true}, {12, 12, 20, 3.3, true},
              {13, 5, 14, 1.0, false}, {14, 6, 15, 0.5 + k, true}};
   g.num_nodes = static_cast<int32_t>(g.nodes.size());
   g.num_links = static_cast<int32_t>(g.links.size());
@@ -157,10 +157,13 @@ class ViewTimeline : public ::testing::Test {
     view_ = spawn({bin("robozoo-view"), *dir_ / "tl.lcmlog", "--port", "0", "--speed", "20"}, *dir_ / "view.txt");
     std::smatch m;
     std::string out;
-    ASSERT_TRUE(wait_for([&] {
-      out = read_file(*dir_ / "view.txt");
-      return std::regex_search(out, m, std::regex(R"(open (http://127\.0\.0\.1:\d+/))"));
-    }, 20)) << out;
+    ASSERT_TRUE(wait_for(
+        [&] {
+          out = read_file(*dir_ / "view.txt");
+          return std::regex_search(out, m, std::regex(R"(open (http://127\.0\.0\.1:\d+/))"));
+        },
+        20))
+        << out;
     page_ = m[1];
     browser_ = new HeadlessBrowser(*dir_ / "profile", *dir_ / "chromium.txt");
   }
@@ -180,10 +183,13 @@ class ViewTimeline : public ::testing::Test {
     for (const auto& t : browser_->call("Target.getTargets", nlohmann::json::object())["targetInfos"])
       if (t["type"] == "page") browser_->call("Target.closeTarget", {{"targetId", t["targetId"]}});
     const std::string tab = browser_->open(page_ + fragment);
-    EXPECT_TRUE(wait_for([&] {
-      const auto j = timeline(tab);
-      return !j.is_null() && j["robot"] == robot && j["done"] == true && j["samples"] == kSteps / kPoseEvery + 1;
-    }, 60)) << timeline(tab).dump() << read_file(*dir_ / "view.txt");
+    EXPECT_TRUE(wait_for(
+        [&] {
+          const auto j = timeline(tab);
+          return !j.is_null() && j["robot"] == robot && j["done"] == true && j["samples"] == kSteps / kPoseEvery + 1;
+        },
+        60))
+        << timeline(tab).dump() << read_file(*dir_ / "view.txt");
     return tab;
   }
   nlohmann::json eval(const std::string& tab, const std::string& js) { return browser_->evaluate(tab, js); }
@@ -201,7 +207,8 @@ class ViewTimeline : public ::testing::Test {
     std::vector<std::string> paths = {*dir_ / name};
     if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS")) paths.push_back(std::string(keep) + "/" + name);
     for (const std::string& p : paths)
-      std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+      std::ofstream(p, std::ios::binary)
+          .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
     return render::read_png(*dir_ / name);
   }
 
@@ -279,10 +286,13 @@ TEST_F(ViewTimeline, StripAndChartCursorsMoveWithThePlayhead) {
   // The strip is drawn at the next frame.
   auto cursor_at = [&](double t) {
     eval(tab, "robozooView.pause(); robozooView.seek(" + nlohmann::json(t).dump() + ")");
-    EXPECT_TRUE(wait_for([&] {
-      const auto j = timeline(tab);
-      return j["stripCursorX"].is_number() && j["playhead"] == t && eval(tab, "robozooView.strip().at") == t;
-    }, 5)) << timeline(tab).dump();
+    EXPECT_TRUE(wait_for(
+        [&] {
+          const auto j = timeline(tab);
+          return j["stripCursorX"].is_number() && j["playhead"] == t && eval(tab, "robozooView.strip().at") == t;
+        },
+        5))
+        << timeline(tab).dump();
     return timeline(tab)["stripCursorX"].get<double>();
   };
   const double x1 = cursor_at(0.5), x2 = cursor_at(2.5);
@@ -312,7 +322,8 @@ TEST_F(ViewTimeline, StripDrawsNinetyFourTracesGroupedByKind) {
   ASSERT_TRUE(wait_for([&] { return eval(tab, "robozooView.strip()")["drawnPoints"].get<int>() > 0; }, 10));
   auto s = eval(tab, "robozooView.strip()");
   EXPECT_EQ(s["traces"], kNeurons + kSensors);
-  EXPECT_EQ(s["groups"], (nlohmann::json{{"neurons", 3}, {"distance", 23}, {"touch", 23}, {"proprio", 23}, {"time", 22}}));
+  EXPECT_EQ(s["groups"],
+            (nlohmann::json{{"neurons", 3}, {"distance", 23}, {"touch", 23}, {"proprio", 23}, {"time", 22}}));
   EXPECT_EQ(s["rows"], 94);
   EXPECT_GE(s["drawnRows"].get<int>(), 5) << "rows too small to read" << s.dump();
   EXPECT_LT(s["drawnRows"].get<int>(), 94) << "94 rows in one panel: too thin" << s.dump();
@@ -333,8 +344,9 @@ TEST_F(ViewTimeline, StripDrawsNinetyFourTracesGroupedByKind) {
   // A group's button hides its rows; hiding every group shows them all.
   eval(tab, "document.querySelector('#strip-groups button[data-group=\"touch\"]').click()");
   EXPECT_TRUE(wait_for([&] { return eval(tab, "robozooView.strip()")["rows"] == 71; }, 5));
-  eval(tab, "for (const g of ['neurons', 'distance', 'proprio', 'time'])"
-            " document.querySelector(`#strip-groups button[data-group=\"${g}\"]`).click()");
+  eval(tab,
+       "for (const g of ['neurons', 'distance', 'proprio', 'time'])"
+       " document.querySelector(`#strip-groups button[data-group=\"${g}\"]`).click()");
   EXPECT_TRUE(wait_for([&] { return eval(tab, "robozooView.strip()")["rows"] == 94; }, 5));
 }
 
@@ -349,8 +361,9 @@ TEST_F(ViewTimeline, CppnPanelDrawsTheChampionsNodesAndLinks) {
   EXPECT_EQ(c["disabled"], kCppnDisabled);
   EXPECT_EQ(c["titled"], kCppnNodes + kCppnLinks) << "every node and link names itself on hover";
   // The node titles say what they are: hidden node 20 is Gaussian at 0.5.
-  const std::string title = eval(tab, "[...document.querySelectorAll('#cppn g.node > title')]"
-                                      ".map((t) => t.textContent).find((t) => t.startsWith('h20'))");
+  const std::string title = eval(tab,
+                                 "[...document.querySelectorAll('#cppn g.node > title')]"
+                                 ".map((t) => t.textContent).find((t) => t.startsWith('h20'))");
   EXPECT_EQ(title, "h20: node 20, hidden, Gaussian, position 0.500");
   shot(tab, "cppn-box", "cppn.png");
 }
@@ -364,11 +377,18 @@ TEST_F(ViewTimeline, PageOpenedAtAUrlLandsAtItsMomentAndTheSliderBringsBackChamp
   EXPECT_EQ(j["gen"], 0);
   EXPECT_EQ(j["chartCursor"], 0);
   // The controls and the URL follow at the next frame.
-  EXPECT_TRUE(wait_for([&] { return timeline(tab)["stateText"] == "paused at 1.50 s of genome 101"; }, 5)) << timeline(tab).dump();
-  EXPECT_TRUE(wait_for([&] { return timeline(tab)["hash"] == "#run=tl&genome=101&t=1.50"; }, 5)) << timeline(tab).dump();
+  EXPECT_TRUE(wait_for([&] { return timeline(tab)["stateText"] == "paused at 1.50 s of genome 101"; }, 5))
+      << timeline(tab).dump();
+  EXPECT_TRUE(wait_for([&] { return timeline(tab)["hash"] == "#run=tl&genome=101&t=1.50"; }, 5))
+      << timeline(tab).dump();
   // The champion slider: its middle position is generation 1's champion.
   eval(tab, "const g = document.getElementById('tl-gen'); g.value = 1; g.dispatchEvent(new Event('change'))");
-  ASSERT_TRUE(wait_for([&] { const auto k = timeline(tab); return k["robot"] == kChampions[1] && k["done"] == true; }, 20))
+  ASSERT_TRUE(wait_for(
+      [&] {
+        const auto k = timeline(tab);
+        return k["robot"] == kChampions[1] && k["done"] == true;
+      },
+      20))
       << timeline(tab).dump();
   EXPECT_EQ(timeline(tab)["playing"], true);
   // Back to live: the newest champion again, followed.

@@ -20,8 +20,7 @@ void broadcast_setup(const std::optional<MpiSetup>& setup) {
   check(MPI_Bcast(header, 2, MPI_UINT64_T, 0, mpi_detail::world()), "MPI_Bcast (setup header)");
   if (!setup || setup->text.empty()) return;
   std::string copy = setup->text;  // MPI_Bcast's buffer is not const
-  check(MPI_Bcast(copy.data(), static_cast<int>(copy.size()), MPI_CHAR, 0, mpi_detail::world()),
-        "MPI_Bcast (setup)");
+  check(MPI_Bcast(copy.data(), static_cast<int>(copy.size()), MPI_CHAR, 0, mpi_detail::world()), "MPI_Bcast (setup)");
 }
 
 std::optional<MpiSetup> receive_setup() {
@@ -36,8 +35,7 @@ std::optional<MpiSetup> receive_setup() {
   setup.session = static_cast<uint32_t>(header[1]);
   setup.text.assign(static_cast<size_t>(n), '\0');
   if (n > 0)
-    check(MPI_Bcast(setup.text.data(), static_cast<int>(n), MPI_CHAR, 0, mpi_detail::world()),
-          "MPI_Bcast (setup)");
+    check(MPI_Bcast(setup.text.data(), static_cast<int>(n), MPI_CHAR, 0, mpi_detail::world()), "MPI_Bcast (setup)");
   return setup;
 }
 

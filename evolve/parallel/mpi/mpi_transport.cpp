@@ -25,13 +25,13 @@ Clock::duration duration(double s) {
 
 struct MpiTransport::Impl {
   struct Slot {
-    bool dead = false;        ///< reported (or about to be reported) Died
-    std::string death;        ///< why
-    bool busy = false;        ///< a job is outstanding
-    uint64_t job = 0;         ///< its index
-    uint64_t bytes_out = 0;   ///< its message's size
+    bool dead = false;       ///< reported (or about to be reported) Died
+    std::string death;       ///< why
+    bool busy = false;       ///< a job is outstanding
+    uint64_t job = 0;        ///< its index
+    uint64_t bytes_out = 0;  ///< its message's size
     Clock::time_point sent_at;
-    Bytes out;                ///< the message MPI may still be sending
+    Bytes out;  ///< the message MPI may still be sending
     MPI_Request request = MPI_REQUEST_NULL;
   };
 
@@ -41,9 +41,7 @@ struct MpiTransport::Impl {
   std::deque<WorkerEvent> events;
   MpiTransportStats stats;
 
-  std::string name(int w) const {
-    return "rank " + std::to_string(rank_of(w)) + " (worker " + std::to_string(w) + ")";
-  }
+  std::string name(int w) const { return "rank " + std::to_string(rank_of(w)) + " (worker " + std::to_string(w) + ")"; }
 
   void bury(int w, const std::string& why) {
     Slot& s = slots[static_cast<size_t>(w)];
@@ -84,8 +82,7 @@ struct MpiTransport::Impl {
     const int rc = MPI_Mrecv(buffer.data(), count, MPI_BYTE, &message, MPI_STATUS_IGNORE);
     const int w = source - 1;
     if (w < 0 || w >= static_cast<int>(slots.size()))
-      throw std::logic_error("MpiTransport: a result from rank " + std::to_string(source) +
-                             ", which is no worker");
+      throw std::logic_error("MpiTransport: a result from rank " + std::to_string(source) + ", which is no worker");
     Slot& s = slots[static_cast<size_t>(w)];
     if (rc != MPI_SUCCESS) {
       bury(w, "could not be received from (" + error_text(rc) + ")");
@@ -104,8 +101,7 @@ struct MpiTransport::Impl {
     if (s.busy) {
       const double took = seconds(Clock::now() - s.sent_at);
       stats.busy_seconds[static_cast<size_t>(w)] += took;
-      if (params.record_jobs)
-        stats.timings.push_back(MpiJobTiming{w, result.index, s.bytes_out, buffer.size(), took});
+      if (params.record_jobs) stats.timings.push_back(MpiJobTiming{w, result.index, s.bytes_out, buffer.size(), took});
     }
     ++stats.jobs[static_cast<size_t>(w)];
     s.busy = false;
@@ -125,8 +121,7 @@ MpiTransport::MpiTransport(MpiTransportParams params) : impl_(std::make_unique<I
   int rank = -1, size = 0;
   check(MPI_Comm_rank(world(), &rank), "MPI_Comm_rank");
   check(MPI_Comm_size(world(), &size), "MPI_Comm_size");
-  if (rank != 0)
-    throw std::invalid_argument("MpiTransport: belongs on rank 0, this is rank " + std::to_string(rank));
+  if (rank != 0) throw std::invalid_argument("MpiTransport: belongs on rank 0, this is rank " + std::to_string(rank));
   if (size < 2)
     throw std::invalid_argument("MpiTransport: needs at least 2 ranks (rank 0 and a worker rank), the job has " +
                                 std::to_string(size));
@@ -163,8 +158,7 @@ MpiTransport::~MpiTransport() {
     for (;;) {
       int done = 0;
       if (requests.empty() ||
-          MPI_Testall(static_cast<int>(requests.size()), requests.data(), &done, MPI_STATUSES_IGNORE) !=
-              MPI_SUCCESS ||
+          MPI_Testall(static_cast<int>(requests.size()), requests.data(), &done, MPI_STATUSES_IGNORE) != MPI_SUCCESS ||
           done || Clock::now() >= deadline)
         break;
       std::this_thread::sleep_for(std::chrono::milliseconds(1));

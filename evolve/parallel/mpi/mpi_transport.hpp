@@ -35,12 +35,12 @@
 namespace robozoo {
 
 struct MpiTransportParams {
-  uint32_t session = 0;             ///< this session's number (its tags); differ from the previous one
-  double poll_min_sleep_s = 20e-6;  ///< first pause after a probe that found nothing (s)
-  double poll_max_sleep_s = 1e-3;   ///< longest pause: the most latency polling adds to a result (s)
-  double shutdown_wait_s = 10.0;    ///< the destructor waits this long for its Shutdown sends (s)
+  uint32_t session = 0;                            ///< this session's number (its tags); differ from the previous one
+  double poll_min_sleep_s = 20e-6;                 ///< first pause after a probe that found nothing (s)
+  double poll_max_sleep_s = 1e-3;                  ///< longest pause: the most latency polling adds to a result (s)
+  double shutdown_wait_s = 10.0;                   ///< the destructor waits this long for its Shutdown sends (s)
   uint32_t max_body_bytes = kDefaultMaxBodyBytes;  ///< largest frame body accepted (bytes)
-  bool record_jobs = false;         ///< keep every job's timing in stats().timings (benchmarks)
+  bool record_jobs = false;                        ///< keep every job's timing in stats().timings (benchmarks)
 };
 
 /// One job as rank 0 saw it (record_jobs).
@@ -53,14 +53,14 @@ struct MpiJobTiming {
 };
 
 struct MpiTransportStats {
-  uint64_t messages_sent = 0;      ///< Job and Shutdown messages (count)
-  uint64_t messages_received = 0;  ///< Result and Failure messages (count)
-  uint64_t bytes_sent = 0;         ///< bytes of the messages sent (bytes)
-  uint64_t bytes_received = 0;     ///< bytes of the messages received (bytes)
-  uint64_t setup_bytes = 0;        ///< bytes of the setup broadcast (bytes)
-  std::vector<uint64_t> jobs;          ///< results received, per worker (count)
-  std::vector<double> busy_seconds;    ///< time with a job outstanding, per worker (s)
-  std::vector<MpiJobTiming> timings;   ///< every job, when record_jobs
+  uint64_t messages_sent = 0;         ///< Job and Shutdown messages (count)
+  uint64_t messages_received = 0;     ///< Result and Failure messages (count)
+  uint64_t bytes_sent = 0;            ///< bytes of the messages sent (bytes)
+  uint64_t bytes_received = 0;        ///< bytes of the messages received (bytes)
+  uint64_t setup_bytes = 0;           ///< bytes of the setup broadcast (bytes)
+  std::vector<uint64_t> jobs;         ///< results received, per worker (count)
+  std::vector<double> busy_seconds;   ///< time with a job outstanding, per worker (s)
+  std::vector<MpiJobTiming> timings;  ///< every job, when record_jobs
 };
 
 class MpiTransport : public Transport {

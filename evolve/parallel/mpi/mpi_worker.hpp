@@ -14,8 +14,8 @@
 namespace robozoo {
 
 struct MpiWorkerParams {
-  double poll_min_sleep_s = 20e-6;  ///< first pause after a probe that found no job (s)
-  double poll_max_sleep_s = 1e-3;   ///< longest pause: the most latency polling adds to a job (s)
+  double poll_min_sleep_s = 20e-6;                 ///< first pause after a probe that found no job (s)
+  double poll_max_sleep_s = 1e-3;                  ///< longest pause: the most latency polling adds to a job (s)
   uint32_t max_body_bytes = kDefaultMaxBodyBytes;  ///< largest frame body accepted (bytes)
 };
 

@@ -47,8 +47,8 @@ TEST(ChampionCli, ACompactResultsChampionBecomesALogThatReplayCheckProves) {
   ASSERT_NE(best, nullptr);
   ASSERT_NE(best->genome.outcome, 0) << "the small run's best robot was never simulated";
 
-  const auto champ = run_shell(join({bin("robozoo-evolve"), "champion", dir / "run.results.json", "--log",
-                                     dir / "champion.lcmlog"}));
+  const auto champ =
+      run_shell(join({bin("robozoo-evolve"), "champion", dir / "run.results.json", "--log", dir / "champion.lcmlog"}));
   ASSERT_EQ(champ.status, 0) << champ.output;
   const LogContents original = read_event_log(dir / "run.lcmlog"), written = read_event_log(dir / "champion.lcmlog");
   const int64_t id = best->genome.genome_id;
@@ -85,13 +85,13 @@ TEST(ChampionCli, ACompactResultsChampionBecomesALogThatReplayCheckProves) {
   for (auto& c : j["champions"])
     if (c["genome_id"] == id) c["fitness"] = c["fitness"].get<double>() + 1.0;
   std::ofstream(dir / "edited.results.json") << j.dump();
-  const auto refused = run_shell(join({bin("robozoo-evolve"), "champion", dir / "edited.results.json", "--log",
-                                       dir / "edited.lcmlog"}));
+  const auto refused =
+      run_shell(join({bin("robozoo-evolve"), "champion", dir / "edited.results.json", "--log", dir / "edited.lcmlog"}));
   EXPECT_EQ(refused.status, 1) << refused.output;
   EXPECT_NE(refused.output.find("evaluates to fitness"), std::string::npos) << refused.output;
 
-  const auto missing = run_shell(join({bin("robozoo-evolve"), "champion", dir / "absent.results.json", "--log",
-                                       dir / "x.lcmlog"}));
+  const auto missing =
+      run_shell(join({bin("robozoo-evolve"), "champion", dir / "absent.results.json", "--log", dir / "x.lcmlog"}));
   EXPECT_EQ(missing.status, 2) << missing.output;
   EXPECT_NE(missing.output.find("absent.results.json: cannot read the compact result"), std::string::npos)
       << missing.output;

@@ -41,7 +41,8 @@ TEST(EvalCli, RandomGenomeReportsMorphologyOutcomeAndFitness) {
 
 TEST(EvalCli, SavedGenomeEvaluatesIdentically) {
   TempDir dir;
-  const auto a = eval_json("--random 5 --mutations 25 --regime recurrent --steps 200 --save-genome " + (dir / "g.json"));
+  const auto a =
+      eval_json("--random 5 --mutations 25 --regime recurrent --steps 200 --save-genome " + (dir / "g.json"));
   const auto b = eval_json("--genome " + (dir / "g.json") + " --steps 200");
   EXPECT_EQ(a, b);
   // Text output names the outcome and the fitness.
@@ -54,8 +55,7 @@ TEST(EvalCli, SavedGenomeEvaluatesIdentically) {
 TEST(EvalCli, BadGenomeFilesExitTwo) {
   TempDir dir;
   std::ofstream(dir / "bad.json") << "{ nope";
-  std::ofstream(dir / "dangling.json")
-      << R"({"id": 1, "nodes": [], "links": []})";
+  std::ofstream(dir / "dangling.json") << R"({"id": 1, "nodes": [], "links": []})";
   for (const std::string& f : {dir / "missing.json", dir / "bad.json", dir / "dangling.json"}) {
     const auto o = run_shell(bin("robozoo-evolve") + " eval --genome " + f);
     EXPECT_EQ(o.status, 2) << f << ": " << o.output;

@@ -17,14 +17,12 @@ namespace {
 
 using namespace robozoo::testing;
 
-
 int run_evolve(const std::string& log, int workers, std::vector<std::string> extra = {},
                const std::vector<std::string>& size = kSmall) {
   const auto o = run_shell(join(evolve_args(log, workers, std::move(extra), size)));
   EXPECT_EQ(o.status, 0) << o.output;
   return o.status;
 }
-
 
 TEST(EvolveCli, HelpDocumentsEveryFlag) {
   const auto o = run_shell(bin("robozoo-evolve") + " --help");

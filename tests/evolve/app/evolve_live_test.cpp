@@ -16,7 +16,6 @@ namespace {
 
 using namespace robozoo::testing;
 
-
 TEST(EvolveLive, LiveRunIsRecordedCompletelyByLcmLogger) {
   // At the default pacing (evolve/io/bus_pacer.hpp: one message every 20 ms, so
   // LCM's queue of 31 for lcm-logger's subscription never fills) and the default
@@ -28,8 +27,9 @@ TEST(EvolveLive, LiveRunIsRecordedCompletelyByLcmLogger) {
   const std::string bus_log = dir / "bus.lcmlog";
   const std::string script =
       "ip link set lo up && ip route add 224.0.0.0/4 dev lo && "
-      "(lcm-logger -f --lcm-url='" + url + "' '" + bus_log + "' >/dev/null 2>&1 & L=\\$!; sleep 1; " +
-      "nice -n 15 " + join(evolve_args(dir / "own.lcmlog", 1, {"--lcm-url", url})) +
+      "(lcm-logger -f --lcm-url='" +
+      url + "' '" + bus_log + "' >/dev/null 2>&1 & L=\\$!; sleep 1; " + "nice -n 15 " +
+      join(evolve_args(dir / "own.lcmlog", 1, {"--lcm-url", url})) +
       "; S=\\$?; sleep 1; kill -INT \\$L; wait \\$L; exit \\$S)";
   const auto o = run_shell("timeout 120 unshare -n sh -c \"" + script + "\"");
   ASSERT_EQ(o.status, 0) << o.output;
@@ -49,9 +49,9 @@ TEST(EvolveLive, LiveRunIsRecordedCompletelyByLcmLogger) {
   ASSERT_GT(count_channel(own, kChannelPose), 31u) << "the run should publish more poses than LCM's queue holds";
   const BusRecording rec = compare_bus_recording(own, bus);
   EXPECT_EQ(rec.defect, "") << "the recording is not what was sent";
-  EXPECT_EQ(rec.missing, 0u) << rec.missing << " of " << rec.sent << " events missing (poses: "
-                             << count_channel(own, kChannelPose) << " logged, " << count_channel(bus, kChannelPose)
-                             << " received)";
+  EXPECT_EQ(rec.missing, 0u) << rec.missing << " of " << rec.sent
+                             << " events missing (poses: " << count_channel(own, kChannelPose) << " logged, "
+                             << count_channel(bus, kChannelPose) << " received)";
 }
 
 }  // namespace

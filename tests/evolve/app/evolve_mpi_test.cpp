@@ -78,8 +78,7 @@ void expect_resumed_at(const Outcome& o, int generation) {
 }
 
 void expect_resume_line(const Outcome& o, const std::string& log) {
-  EXPECT_NE(o.output.find("the run can be resumed with: robozoo-evolve --log " + log + " --resume"),
-            std::string::npos)
+  EXPECT_NE(o.output.find("the run can be resumed with: robozoo-evolve --log " + log + " --resume"), std::string::npos)
       << "mpirun's status " << o.status << ", checkpoint at generation " << generations_done(log) << ", output:\n"
       << o.output;
   EXPECT_NE(o.status, 0) << o.output;
@@ -103,14 +102,18 @@ TEST(EvolveMpi, RankKilledMidRunThenResumedLocally) {
   ASSERT_EQ(run_logged(evolve_args(dir / "whole.lcmlog", 2, {}, kLonger)).status, 0);
   const std::string log = dir / "cut.lcmlog";
   pid_t victim = -1;
-  const Outcome o = interrupt(mpi_evolve_args(3, log, {}, kLonger), log, 2,
-                              [&](pid_t mpirun) {
-                                victim = rank_pid(mpirun, 2);
-                                kill_process(victim, SIGKILL);
-                              },
-                              dir / "out.txt");
+  const Outcome o = interrupt(
+      mpi_evolve_args(3, log, {}, kLonger), log, 2,
+      [&](pid_t mpirun) {
+        victim = rank_pid(mpirun, 2);
+        kill_process(victim, SIGKILL);
+      },
+      dir / "out.txt");
   ASSERT_GT(victim, 0) << "rank 2 not found among mpirun's children\n" << o.output;
-  { SCOPED_TRACE("first interrupt"); expect_resume_line(o, log); }
+  {
+    SCOPED_TRACE("first interrupt");
+    expect_resume_line(o, log);
+  }
   EXPECT_NE(o.output.find("an MPI rank died or the job was cancelled"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("cut.lcmlog.checkpoint is intact after "), std::string::npos) << o.output;
   // The checkpoint reads back, mid-run.
@@ -129,18 +132,26 @@ TEST(EvolveMpi, CancelledJobThenResumedOnOtherRankCounts) {
   ASSERT_EQ(run_logged(evolve_args(dir / "whole.lcmlog", 2, {}, kLonger)).status, 0);
   const std::string log = dir / "cut.lcmlog";
   // As Slurm's scancel does: SIGTERM to mpirun, which stops every rank.
-  const Outcome o = interrupt(mpi_evolve_args(3, log, {}, kLonger), log, 1,
-                              [](pid_t mpirun) { kill_process(mpirun, SIGTERM); }, dir / "out.txt", true);
-  { SCOPED_TRACE("first interrupt"); expect_resume_line(o, log); }
+  const Outcome o = interrupt(
+      mpi_evolve_args(3, log, {}, kLonger), log, 1, [](pid_t mpirun) { kill_process(mpirun, SIGTERM); },
+      dir / "out.txt", true);
+  {
+    SCOPED_TRACE("first interrupt");
+    expect_resume_line(o, log);
+  }
   EXPECT_FALSE(read_checkpoint(log + ".checkpoint").finished);
   // Resume under 2 ranks, kill a worker rank again, finish under 4 ranks.
   // Interrupt the resumed job one generation after where it resumes, so that it is
   // surely still running (a fixed generation may already be behind it).
   const int resumed_at = generations_done(log);
   ASSERT_LT(resumed_at, 7) << "the cancelled job got too far for a second interruption";
-  const Outcome again = interrupt(mpi_evolve_args(2, log, {"--resume"}, kLonger), log, resumed_at + 1,
-                                  [](pid_t mpirun) { kill_process(rank_pid(mpirun, 1), SIGKILL); }, dir / "out2.txt");
-  { SCOPED_TRACE("second interrupt: a worker rank killed"); expect_resume_line(again, log); }
+  const Outcome again = interrupt(
+      mpi_evolve_args(2, log, {"--resume"}, kLonger), log, resumed_at + 1,
+      [](pid_t mpirun) { kill_process(rank_pid(mpirun, 1), SIGKILL); }, dir / "out2.txt");
+  {
+    SCOPED_TRACE("second interrupt: a worker rank killed");
+    expect_resume_line(again, log);
+  }
   const int last_resume = generations_done(log);
   const Outcome resumed = run_logged(mpi_evolve_args(4, log, {"--resume"}, kLonger));
   ASSERT_EQ(resumed.status, 0) << resumed.output;

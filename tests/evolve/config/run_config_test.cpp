@@ -37,8 +37,7 @@ TEST(RunConfig, DefaultsMatchDesign) {
   EXPECT_EQ(j["sim"]["steps"], 2500);
   EXPECT_EQ(j["growth"]["cloud_points"], 629);
   EXPECT_EQ(j["regime"], "feedforward");
-  EXPECT_EQ(j["neat"]["hidden_activations"],
-            nlohmann::json({"signed_sigmoid", "signed_cosine", "gaussian"}));
+  EXPECT_EQ(j["neat"]["hidden_activations"], nlohmann::json({"signed_sigmoid", "signed_cosine", "gaussian"}));
 }
 
 TEST(RunConfig, OverlayChangesOnlyGivenKeys) {
@@ -51,8 +50,7 @@ TEST(RunConfig, OverlayChangesOnlyGivenKeys) {
 TEST(RunConfig, ErrorsNameTheKey) {
   EXPECT_NE(error_of({{"nope", 1}}).find("nope: unknown key"), std::string::npos);
   EXPECT_NE(error_of({{"neat", {{"populaton", 5}}}}).find("neat.populaton: unknown key"), std::string::npos);
-  EXPECT_NE(error_of({{"neat", {{"population", -5}}}}).find("neat.population: must be in [2,"),
-            std::string::npos);
+  EXPECT_NE(error_of({{"neat", {{"population", -5}}}}).find("neat.population: must be in [2,"), std::string::npos);
   EXPECT_NE(error_of({{"growth", {{"t_matter", 1.5}}}}).find("growth.t_matter"), std::string::npos);
   EXPECT_NE(error_of({{"sim", {{"dt", "fast"}}}}).find("sim.dt: must be a number"), std::string::npos);
   EXPECT_NE(error_of({{"regime", "sideways"}}).find("regime: unknown regime"), std::string::npos);
@@ -159,9 +157,13 @@ TEST(RunConfig, TopologyRulesAreKeysWithHyperNeatDefaults) {
   EXPECT_EQ(j["sim"]["target_x"], 50.0);
   EXPECT_EQ(j["sim"]["distance_sensor_range"], 100.0);
   // The classic variants are reachable, and a wrong name is refused naming the key and the choices.
-  const RunConfig c = config_from_json({{"neat", {{"link_rule", "cycle_test"}, {"initial_links", "inputs_to_outputs"},
-                                                  {"add_link", "tries"}, {"add_node", "classic"},
-                                                  {"compatibility", "classic"}, {"self_loops", true}}}});
+  const RunConfig c = config_from_json({{"neat",
+                                         {{"link_rule", "cycle_test"},
+                                          {"initial_links", "inputs_to_outputs"},
+                                          {"add_link", "tries"},
+                                          {"add_node", "classic"},
+                                          {"compatibility", "classic"},
+                                          {"self_loops", true}}}});
   EXPECT_EQ(c.neat.link_rule, LinkRule::CycleTest);
   EXPECT_EQ(c.neat.initial_links, InitialLinks::InputsToOutputs);
   EXPECT_EQ(c.neat.add_link, AddLinkRule::Tries);

@@ -18,8 +18,8 @@
 namespace robozoo {
 namespace {
 
-using math::test::BitsHash;
 using math::test::bits;
+using math::test::BitsHash;
 using math::test::Stream;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -28,9 +28,30 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Arguments: random sums in [-60, 60] and [-3, 3], special values, and
 /// arguments at the edges of each function's range.
 std::vector<double> arguments(uint64_t seed, int random_count) {
-  std::vector<double> x = {0.0,   -0.0,   std::numeric_limits<double>::denorm_min(), -DBL_MIN, 1e-300,
-                           1.0,   -1.0,   0.5,     710.0,  -710.0, 745.2, -745.2, 1e10, -1e10, 0x1p20,
-                           -0x1p20, 1.5707963267948966, 3.141592653589793, 27.0, -27.0, kInf, -kInf, kNaN, DBL_MAX};
+  std::vector<double> x = {0.0,
+                           -0.0,
+                           std::numeric_limits<double>::denorm_min(),
+                           -DBL_MIN,
+                           1e-300,
+                           1.0,
+                           -1.0,
+                           0.5,
+                           710.0,
+                           -710.0,
+                           745.2,
+                           -745.2,
+                           1e10,
+                           -1e10,
+                           0x1p20,
+                           -0x1p20,
+                           1.5707963267948966,
+                           3.141592653589793,
+                           27.0,
+                           -27.0,
+                           kInf,
+                           -kInf,
+                           kNaN,
+                           DBL_MAX};
   Stream s(seed);
   for (int i = 0; i < random_count; ++i) x.push_back(i % 2 ? s.uniform(-60.0, 60.0) : s.uniform(-3.0, 3.0));
   return x;
@@ -86,8 +107,7 @@ TEST(Activation, SpecialValues) {
   EXPECT_EQ(activate(Activation::SteepenedSigmoid, 0.0), 0.5);
   EXPECT_EQ(activate(Activation::SteepenedSigmoid, -kInf), 0.0);
   EXPECT_EQ(activate(Activation::SteepenedSigmoid, kInf), 1.0);
-  for (int c = 0; c < kNumActivations; ++c)
-    EXPECT_TRUE(std::isnan(activate(static_cast<Activation>(c), kNaN))) << c;
+  for (int c = 0; c < kNumActivations; ++c) EXPECT_TRUE(std::isnan(activate(static_cast<Activation>(c), kNaN))) << c;
 }
 
 /// The bits of every activation and of math::tanh over a fixed set of

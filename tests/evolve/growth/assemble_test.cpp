@@ -12,8 +12,12 @@ GrownBody body() {
   GrownBody b;
   const int parents[] = {-1, 0, 1, 2, 0, 0};
   const bool joints[] = {false, false, true, false, true, false};
-  const uint8_t sensors[] = {kSensorTime | kSensorDistance, 0, kSensorProprio | kSensorTouch, kSensorTouch,
-                             kSensorDistance | kSensorTime | kSensorProprio, 0};
+  const uint8_t sensors[] = {kSensorTime | kSensorDistance,
+                             0,
+                             kSensorProprio | kSensorTouch,
+                             kSensorTouch,
+                             kSensorDistance | kSensorTime | kSensorProprio,
+                             0};
   for (int i = 0; i < 6; ++i) {
     Sphere s;
     s.index = i;
@@ -57,9 +61,8 @@ TEST(Assemble, NumbersBodiesJointsNeuronsAndSensors) {
   EXPECT_EQ(r.spheres[3].motor_neuron, -1);
   // Sensors by sphere, then Distance, Touch, Proprio, Time.
   const std::pair<int, SensorType> want[] = {
-      {0, SensorType::Distance}, {0, SensorType::Time},    {2, SensorType::Touch},
-      {2, SensorType::Proprio},  {3, SensorType::Touch},   {4, SensorType::Distance},
-      {4, SensorType::Proprio},  {4, SensorType::Time}};
+      {0, SensorType::Distance}, {0, SensorType::Time},     {2, SensorType::Touch},   {2, SensorType::Proprio},
+      {3, SensorType::Touch},    {4, SensorType::Distance}, {4, SensorType::Proprio}, {4, SensorType::Time}};
   ASSERT_EQ(r.sensors.size(), 8u);
   for (size_t k = 0; k < 8; ++k) {
     EXPECT_EQ(r.sensors[k].sphere, want[k].first) << k;

@@ -53,7 +53,8 @@ TEST(CppnProbe, NeedsTheRobotLayout) {
   l.bias_input = 2;
   l.num_outputs = 11;
   Genome g;
-  for (int i = 0; i < 3; ++i) g.nodes.push_back({i, i == 2 ? NodeKind::Bias : NodeKind::Input, Activation::Linear, 0.0});
+  for (int i = 0; i < 3; ++i)
+    g.nodes.push_back({i, i == 2 ? NodeKind::Bias : NodeKind::Input, Activation::Linear, 0.0});
   for (int o = 0; o < 11; ++o) g.nodes.push_back({3 + o, NodeKind::Output, Activation::SignedSigmoid, 1.0});
   Network net(g, l);
   EXPECT_THROW(CppnProbe(net, 1.0), std::invalid_argument);

@@ -29,7 +29,7 @@ TEST(GrowBody, JointedSpheresStartComponentsAndCarryMotors) {
   ASSERT_EQ(b.motors.size(), 3u);
   EXPECT_EQ(b.num_components, 3);
   for (int i = 0; i < 3; ++i) {
-    EXPECT_EQ(b.spheres[i].body, i);  // each hinge starts a component
+    EXPECT_EQ(b.spheres[i].body, i);          // each hinge starts a component
     EXPECT_EQ(b.spheres[i].center.z(), 0.0);  // growth frame
     EXPECT_EQ(b.spheres[i].motor_neuron, -1);
   }

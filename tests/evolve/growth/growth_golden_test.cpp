@@ -47,8 +47,8 @@ TEST(GrowthGolden, RandomGenomesOfBothRegimesGrowTheRecordedRobots) {
   // The set grows real robots, not roots alone.
   EXPECT_GT(set.multi_sphere, 40);
   EXPECT_GT(set.spheres, 1000);
-  EXPECT_EQ(set.hash, 0x65f6cd09d7f57080ull) << std::hex << set.hash << std::dec << " spheres " << set.spheres
-                              << " multi " << set.multi_sphere;
+  EXPECT_EQ(set.hash, 0x65f6cd09d7f57080ull)
+      << std::hex << set.hash << std::dec << " spheres " << set.spheres << " multi " << set.multi_sphere;
 }
 
 }  // namespace

@@ -23,14 +23,12 @@ using CppnOutputsArray = std::array<double, 11>;
 
 using Out = CppnOutputsArray;
 
-
 class Checker {
  public:
   /// check_maximal: also re-cast every cloud to prove no admissible point was
   /// skipped (as costly as growing again, so not done for every genome).
   Checker(Network& net, const Robot& robot, const GrowthParams& p, bool check_maximal)
-      : net_(net), r_(robot), p_(p), n_(static_cast<int>(robot.spheres.size())),
-        check_maximal_(check_maximal) {}
+      : net_(net), r_(robot), p_(p), n_(static_cast<int>(robot.spheres.size())), check_maximal_(check_maximal) {}
 
   Out query(const Eigen::Vector3d& x, double r_parent, int one_hot = -1) {
     double in[9] = {x.x(), x.y(), x.z(), r_parent, p_.bias_input, 0, 0, 0, 0};
@@ -58,9 +56,7 @@ class Checker {
 
  private:
   // Pre-shift centre (growth frame).
-  Eigen::Vector3d c(int i) const {
-    return r_.spheres[i].center - Eigen::Vector3d(0, 0, r_.vertical_shift);
-  }
+  Eigen::Vector3d c(int i) const { return r_.spheres[i].center - Eigen::Vector3d(0, 0, r_.vertical_shift); }
   bool grown_joint(int i) const { return r_.spheres[i].has_joint || r_.spheres[i].joint_pruned; }
 
   void structure() {
@@ -169,8 +165,10 @@ class Checker {
       if (q != parent && dist < (1 - e) * r) return false;  // (b)
       const int qc = comp_[q];
       bool joined;
-      if (jointed) joined = qc == pc;  // the new component is joined to the parent's only
-      else joined = qc == pc || comp_parent_[qc] == pc || comp_parent_[pc] == qc;
+      if (jointed)
+        joined = qc == pc;  // the new component is joined to the parent's only
+      else
+        joined = qc == pc || comp_parent_[qc] == pc || comp_parent_[pc] == qc;
       const double reach = r + r_.spheres[q].radius;
       if (!joined && dist < (1 - e) * reach) return false;  // (c)
     }
@@ -200,8 +198,7 @@ class Checker {
       for (size_t a = 1; a < ch.size(); ++a) {
         EXPECT_EQ(ch[a], ch[a - 1] + 1) << "children of " << i << " not consecutive";
         const Sphere &x = r_.spheres[ch[a - 1]], &y = r_.spheres[ch[a]];
-        EXPECT_TRUE(x.matter > y.matter ||
-                    (x.matter == y.matter && x.cloud_angle_index < y.cloud_angle_index));
+        EXPECT_TRUE(x.matter > y.matter || (x.matter == y.matter && x.cloud_angle_index < y.cloud_angle_index));
       }
     }
     std::sort(parents.begin(), parents.end(),
@@ -228,7 +225,11 @@ class Checker {
       if (ch.empty() && stopped_at_max) continue;
       const Eigen::Vector3d cp = c(P);
       const double rp = r_.spheres[P].radius;
-      struct Point { int k; double m; Out o; };
+      struct Point {
+        int k;
+        double m;
+        Out o;
+      };
       std::vector<Point> pts;
       for (int k = 0; k < p_.cloud_points; ++k) {
         const double a = k * p_.cloud_step;
@@ -311,9 +312,7 @@ class Checker {
     }
   }
 
-  double expressed(double w) const {
-    return std::abs(w) > p_.weight_threshold ? w * p_.weight_max : 0.0;
-  }
+  double expressed(double w) const { return std::abs(w) > p_.weight_threshold ? w * p_.weight_max : 0.0; }
 
   void weights() {
     const auto ns = static_cast<Eigen::Index>(r_.sensors.size());
@@ -424,17 +423,24 @@ TEST(GrowInvariants, HoldForRandomCppnsOfBothRegimes) {
     partial += n > 1 && n < p.max_spheres;
     joint += !robot.joints.empty();
     for (const Sphere& s : robot.spheres)
-      if (s.joint_pruned) { ++pruned; break; }
+      if (s.joint_pruned) {
+        ++pruned;
+        break;
+      }
     for (const Sensor& s : robot.sensors)
-      if (s.type == SensorType::Distance) { ++distance; break; }
+      if (s.type == SensorType::Distance) {
+        ++distance;
+        break;
+      }
     simulate += robot.simulate;
   }
   std::sort(counts.begin(), counts.end());
-  std::printf("%d genomes: %d grew beyond the root (%d reached max_spheres, %d stopped between), "
-              "%d with a joint, %d with a pruned joint, %d with a distance sensor, %d simulated; "
-              "spheres median %d, 90th percentile %d\n",
-              kGenomes, grew, full, partial, joint, pruned, distance, simulate,
-              counts[counts.size() / 2], counts[counts.size() * 9 / 10]);
+  std::printf(
+      "%d genomes: %d grew beyond the root (%d reached max_spheres, %d stopped between), "
+      "%d with a joint, %d with a pruned joint, %d with a distance sensor, %d simulated; "
+      "spheres median %d, 90th percentile %d\n",
+      kGenomes, grew, full, partial, joint, pruned, distance, simulate, counts[counts.size() / 2],
+      counts[counts.size() * 9 / 10]);
   // The checks above covered real morphologies of every kind.
   EXPECT_GT(grew, kGenomes / 4);
   EXPECT_GT(partial, 20);

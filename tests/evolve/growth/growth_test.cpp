@@ -219,10 +219,9 @@ TEST(Grow, JointSurvivesOnANonLeafSphere) {
   // Sensors: root D T Time; sphere 1 D T P Time; sphere 2 D T Time (its P went
   // with its joint).
   ASSERT_EQ(r.sensors.size(), 10u);
-  const SensorType want[] = {SensorType::Distance, SensorType::Touch,   SensorType::Time,
-                             SensorType::Distance, SensorType::Touch,   SensorType::Proprio,
-                             SensorType::Time,     SensorType::Distance, SensorType::Touch,
-                             SensorType::Time};
+  const SensorType want[] = {SensorType::Distance, SensorType::Touch,   SensorType::Time, SensorType::Distance,
+                             SensorType::Touch,    SensorType::Proprio, SensorType::Time, SensorType::Distance,
+                             SensorType::Touch,    SensorType::Time};
   const int sphere_of[] = {0, 0, 0, 1, 1, 1, 1, 2, 2, 2};
   for (int k = 0; k < 10; ++k) {
     EXPECT_EQ(r.sensors[k].type, want[k]) << k;
@@ -342,8 +341,10 @@ TEST(Grow, RejectsBadInput) {
   small.bias_input = 2;
   small.num_outputs = 1;
   Genome tiny;
-  tiny.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0}, {1, NodeKind::Input, Activation::Linear, 0.0},
-                {2, NodeKind::Bias, Activation::Linear, 0.0}, {3, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
+  tiny.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
+                {1, NodeKind::Input, Activation::Linear, 0.0},
+                {2, NodeKind::Bias, Activation::Linear, 0.0},
+                {3, NodeKind::Output, Activation::SignedSigmoid, 1.0}};
   Network wrong(tiny, small);
   EXPECT_THROW(grow(wrong, {}), std::invalid_argument);
 }

@@ -64,9 +64,9 @@ TEST(Placement, RuleCSiblingComponentsMayNotInterpenetrate) {
 TEST(Placement, RuleCFusedSphereMayOverlapParentsChildAndParentComponents) {
   // Components 0 - 1 - 2 in a chain of hinges.
   Placement pl(2.0, 10, kTol);
-  pl.add_root(V(0, 0, 0), 0.1);                       // sphere 0, component 0
-  ASSERT_EQ(pl.add(V(0.3, 0, 0), 0.1, 0, true), 1);   // sphere 1, component 1, hinged to 0
-  ASSERT_EQ(pl.add(V(0.3, 0.3, 0), 0.1, 1, true), 2); // sphere 2, component 2, hinged to 1
+  pl.add_root(V(0, 0, 0), 0.1);                        // sphere 0, component 0
+  ASSERT_EQ(pl.add(V(0.3, 0, 0), 0.1, 0, true), 1);    // sphere 1, component 1, hinged to 0
+  ASSERT_EQ(pl.add(V(0.3, 0.3, 0), 0.1, 1, true), 2);  // sphere 2, component 2, hinged to 1
   EXPECT_EQ(pl.component_parent(2), 1);
   EXPECT_FALSE(pl.directly_joined(0, 2));
   // A sphere of radius 0.2 at p overlaps spheres 0 and 2 (centres 0.255 away,

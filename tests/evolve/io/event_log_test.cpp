@@ -67,8 +67,8 @@ TEST(EventLog, FindsTheTimestampOfTheEventEndingAtAnOffset) {
     log.sync();
     ends.push_back(log.bytes());
     // A payload that holds the sync word and a plausible header: not an event.
-    std::vector<uint8_t> tricky = {0xED, 0xA1, 0xDA, 0x01, 0, 0, 0, 0, 0, 0, 0, 9, 0, 0, 0, 0,
-                                   0, 0, 0, 0x63, 0, 0, 0, 1, 0, 0, 0, 0};
+    std::vector<uint8_t> tricky = {0xED, 0xA1, 0xDA, 0x01, 0, 0,    0, 0, 0, 0, 0, 9, 0, 0,
+                                   0,    0,    0,    0,    0, 0x63, 0, 0, 0, 1, 0, 0, 0, 0};
     log.write("BB", tricky, 222);
     log.sync();
     ends.push_back(log.bytes());

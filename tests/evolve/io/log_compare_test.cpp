@@ -373,9 +373,9 @@ TEST(LogCompare, FindsReorderedEvents) {
 // A record that does not decode never compares equal, not even to itself.
 TEST(LogCompare, AnUndecodableRecordEqualsNothing) {
   const std::vector<std::vector<uint8_t>> bad = {
-      {},                                  // empty
-      {0xde, 0xad},                        // garbage
-      encode_message(pose_message(0)),     // a pose on the genome channel (wrong fingerprint)
+      {},                               // empty
+      {0xde, 0xad},                     // garbage
+      encode_message(pose_message(0)),  // a pose on the genome channel (wrong fingerprint)
   };
   for (const auto& data : bad) {
     LogContents a = log_of(Messages{});

@@ -89,8 +89,8 @@ TEST(Trig, SpecialValues) {
   // +-inf and for NaN.
   EXPECT_LE(ulp_error(sin(0x1p20), sinl(0x1p20L)), 1.0L);
   EXPECT_LE(ulp_error(cos(-0x1p20), cosl(-0x1p20L)), 1.0L);
-  for (double x : {std::nextafter(0x1p20, kInf), -std::nextafter(0x1p20, kInf), 1e7, 1e300, DBL_MAX, kInf, -kInf,
-                   kNaN, -kNaN}) {
+  for (double x :
+       {std::nextafter(0x1p20, kInf), -std::nextafter(0x1p20, kInf), 1e7, 1e300, DBL_MAX, kInf, -kInf, kNaN, -kNaN}) {
     EXPECT_EQ(bits(sin(x)), kCanonicalNaNBits) << x;
     EXPECT_EQ(bits(cos(x)), kCanonicalNaNBits) << x;
   }

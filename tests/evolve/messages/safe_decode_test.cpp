@@ -103,8 +103,7 @@ TEST(SafeDecode, RejectsTruncationTrailingBytesAndWrongType) {
   const auto bytes = encode_message(morphology(3, 2, 2));
   morphology_t out;
   std::string why;
-  for (size_t cut = 0; cut < bytes.size(); cut += 7)
-    EXPECT_FALSE(safe_decode(bytes.data(), cut, out, &why)) << cut;
+  for (size_t cut = 0; cut < bytes.size(); cut += 7) EXPECT_FALSE(safe_decode(bytes.data(), cut, out, &why)) << cut;
   auto longer = bytes;
   longer.push_back(0);
   EXPECT_FALSE(safe_decode(longer.data(), longer.size(), out, &why));

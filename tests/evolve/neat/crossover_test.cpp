@@ -13,8 +13,11 @@ Genome base(int64_t id) { return test::tiny_genome(id, Activation::SignedSigmoid
 Genome parent_a() {
   Genome g = base(1);
   g.nodes.push_back({4, NodeKind::Hidden, Activation::Gaussian});
-  g.links = {{0, 0, 3, 1.0, true, 0}, {1, 1, 3, 2.0, true, 0}, {2, 2, 3, 3.0, false, 0},
-             {3, 2, 4, 1.0, true, 1}, {4, 4, 3, 3.0, true, 1}};
+  g.links = {{0, 0, 3, 1.0, true, 0},
+             {1, 1, 3, 2.0, true, 0},
+             {2, 2, 3, 3.0, false, 0},
+             {3, 2, 4, 1.0, true, 1},
+             {4, 4, 3, 3.0, true, 1}};
   return g;
 }
 // b: 0->3 (0), 1->3 (1), 2->3 (2), 1->5 (5), 5->3 (6), 0->3 ... ; hidden 5.
@@ -22,7 +25,7 @@ Genome parent_b() {
   Genome g = base(2);
   g.nodes.push_back({5, NodeKind::Hidden, Activation::SignedCosine});
   g.links = {{0, 0, 3, -1.0, true, 0}, {1, 1, 3, -2.0, false, 0}, {2, 2, 3, -3.0, true, 0},
-             {5, 1, 5, 1.0, true, 2}, {6, 5, 3, -1.0, true, 2}, {9, 0, 5, 0.5, true, 3}};
+             {5, 1, 5, 1.0, true, 2},  {6, 5, 3, -1.0, true, 2},  {9, 0, 5, 0.5, true, 3}};
   return g;
 }
 
@@ -59,9 +62,12 @@ TEST(Crossover, MatchingGenesComeWholeFromEitherParent) {
     const Genome c = crossover(a, 2.0, b, 1.0, rng);
     for (int i = 0; i < 3; ++i) {
       const LinkGene& l = c.links[static_cast<size_t>(i)];
-      if (l == a.links[static_cast<size_t>(i)]) ++from_a[i];
-      else if (l == b.links[static_cast<size_t>(i)]) ++from_b[i];
-      else ADD_FAILURE() << "matching gene " << i << " mixes the parents' genes";
+      if (l == a.links[static_cast<size_t>(i)])
+        ++from_a[i];
+      else if (l == b.links[static_cast<size_t>(i)])
+        ++from_b[i];
+      else
+        ADD_FAILURE() << "matching gene " << i << " mixes the parents' genes";
     }
     // Non-matching genes of the fitter parent are copied unchanged.
     EXPECT_EQ(c.links[3], a.links[3]);

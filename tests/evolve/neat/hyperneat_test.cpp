@@ -35,8 +35,11 @@ Genome parent_a() {
 Genome parent_b() {
   Genome g = base(2);
   g.nodes.push_back({5, NodeKind::Hidden, Activation::SignedCosine, 0.5});
-  g.links = {{0, 0, 3, -1.0, true, 0}, {1, 1, 3, -3.0, true, 0}, {2, 2, 3, 4.0, true, 0},
-             {5, 2, 5, 1.0, true, 2}, {6, 5, 3, 2.0, true, 2}};
+  g.links = {{0, 0, 3, -1.0, true, 0},
+             {1, 1, 3, -3.0, true, 0},
+             {2, 2, 3, 4.0, true, 0},
+             {5, 2, 5, 1.0, true, 2},
+             {6, 5, 3, 2.0, true, 2}};
   return g;
 }
 
@@ -80,7 +83,8 @@ TEST(HyperNeatCrossover, BothKeepsEveryGeneAndPicksMatchingGenesByFitnessShare) 
   int from_a = 0;
   const int n = 20000;
   for (int k = 0; k < n; ++k)
-    from_a += crossover(parent_a(), 3.0, parent_b(), 1.0, genes(CrossoverGenes::Both), false, rng).links[0].weight == 1.0;
+    from_a +=
+        crossover(parent_a(), 3.0, parent_b(), 1.0, genes(CrossoverGenes::Both), false, rng).links[0].weight == 1.0;
   EXPECT_NEAR(from_a / double(n), 0.75, 0.01);
 }
 
@@ -143,7 +147,8 @@ TEST(HyperNeatCrossover, AParentOfFitnessZeroCountsAsOneTenThousandth) {
   int from_a = 0;
   const int n = 20000;
   for (int k = 0; k < n; ++k)
-    from_a += crossover(parent_a(), 0.0, parent_b(), 0.0, genes(CrossoverGenes::Both), false, rng).links[0].weight == 1.0;
+    from_a +=
+        crossover(parent_a(), 0.0, parent_b(), 0.0, genes(CrossoverGenes::Both), false, rng).links[0].weight == 1.0;
   EXPECT_NEAR(from_a / double(n), 0.5, 0.01);
 }
 
@@ -404,7 +409,8 @@ TEST(HyperNeatMechanics, ConfigKeysRoundTripAndTheSetIsReadFirst) {
   EXPECT_EQ(neat_mechanics_of(c.neat), "robozoo");
   // A key beside it overrides it, whatever the keys' order ("crossover_genes" sorts before
   // "mechanics", "threshold_rule" after).
-  c = config_from_json({{"neat", {{"mechanics", "robozoo"}, {"crossover_genes", "both"}, {"threshold_rule", "hyperneat"}}}});
+  c = config_from_json(
+      {{"neat", {{"mechanics", "robozoo"}, {"crossover_genes", "both"}, {"threshold_rule", "hyperneat"}}}});
   EXPECT_EQ(c.neat.crossover_genes, CrossoverGenes::Both);
   EXPECT_EQ(c.neat.threshold_rule, ThresholdRule::HyperNeat);
   EXPECT_EQ(c.neat.mutation_order, MutationOrder::OneStructural);

@@ -80,8 +80,7 @@ TEST(InitialGenome, HyperNeatStartLinksEverythingTheRegimeAllows) {
   }
   EXPECT_EQ(output_to_output, 110);
   EXPECT_EQ(pairs.size(), 209u);
-  for (const auto& n : rec.nodes)
-    EXPECT_EQ(n.position, n.kind == NodeKind::Output ? 1.0 : 0.0) << "node " << n.id;
+  for (const auto& n : rec.nodes) EXPECT_EQ(n.position, n.kind == NodeKind::Output ? 1.0 : 0.0) << "node " << n.id;
   // Both regimes give an input -> output link the same innovation number.
   for (size_t k = 0; k < ff.links.size(); ++k) {
     EXPECT_EQ(ff.links[k].from, rec.links[k].from);

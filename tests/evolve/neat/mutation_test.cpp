@@ -26,8 +26,8 @@ bool has_self_loop(const Genome& g) {
 }
 
 // Grows a genome by many random structural mutations, new tracker generation each round.
-void grow(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p,
-          InnovationTracker& t, int rounds, Rng& rng, int* added_links = nullptr) {
+void grow(Genome& g, Regime regime, const GenomeLayout& layout, const NeatParams& p, InnovationTracker& t, int rounds,
+          Rng& rng, int* added_links = nullptr) {
   for (int r = 0; r < rounds; ++r) {
     t.new_generation();
     if (rng.bernoulli(0.2)) mutate_add_node(g, p, t, r, rng);
@@ -96,8 +96,8 @@ TEST(MutateAddLink, NewLinkIsNewBornAndRegistered) {
   Genome h = initial_genome(layout, 1, p, Regime::FeedForward, rng);
   for (int k = 0; k < 100 && h.links.size() == 6; ++k) {
     Genome tmp = h;
-    if (mutate_add_link(tmp, Regime::Recurrent, layout, p, t, 7, rng) &&
-        tmp.links.back().from == l.from && tmp.links.back().to == l.to)
+    if (mutate_add_link(tmp, Regime::Recurrent, layout, p, t, 7, rng) && tmp.links.back().from == l.from &&
+        tmp.links.back().to == l.to)
       h = tmp;
   }
   ASSERT_EQ(h.links.size(), 7u);
@@ -200,8 +200,7 @@ TEST(MutateAddNode, ActivationsComeFromTheMask) {
     ASSERT_TRUE(mutate_add_node(g, p, t, 1, rng));
     got.insert(g.nodes.back().activation);
   }
-  EXPECT_EQ(got, (std::set<Activation>{Activation::SignedSigmoid, Activation::SignedCosine,
-                                       Activation::Gaussian}));
+  EXPECT_EQ(got, (std::set<Activation>{Activation::SignedSigmoid, Activation::SignedCosine, Activation::Gaussian}));
   p.hidden_activations = 0;
   InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
   Genome g = initial_genome(layout, 0, p, Regime::FeedForward, rng);
@@ -279,11 +278,19 @@ TEST(Mutate, AtMostOneStructuralChangeAndWeightsOnlyWithoutOne) {
     const size_t added = g.links.size() - before.links.size();
     ASSERT_TRUE(added == 0 || added == 1 || added == 2);
     bool weights_changed = false;
-    for (size_t k = 0; k < before.links.size(); ++k)
-      weights_changed |= g.links[k].weight != before.links[k].weight;
-    if (added == 2) { ++nodes; EXPECT_FALSE(weights_changed); }
-    if (added == 1) { ++links; EXPECT_FALSE(weights_changed); }
-    if (added == 0) { ++weights; EXPECT_TRUE(weights_changed); }
+    for (size_t k = 0; k < before.links.size(); ++k) weights_changed |= g.links[k].weight != before.links[k].weight;
+    if (added == 2) {
+      ++nodes;
+      EXPECT_FALSE(weights_changed);
+    }
+    if (added == 1) {
+      ++links;
+      EXPECT_FALSE(weights_changed);
+    }
+    if (added == 0) {
+      ++weights;
+      EXPECT_TRUE(weights_changed);
+    }
   }
   EXPECT_GT(nodes, 100);
   EXPECT_GT(links, 40);
@@ -296,12 +303,10 @@ TEST(Mutate, AtMostOneStructuralChangeAndWeightsOnlyWithoutOne) {
 Genome hand_genome() {
   Genome g;
   g.id = 7;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
-             {1, NodeKind::Input, Activation::Linear, 0.0},
-             {2, NodeKind::Bias, Activation::Linear, 0.0},
-             {3, NodeKind::Output, Activation::SignedSigmoid, 1.0},
-             {4, NodeKind::Output, Activation::SignedSigmoid, 1.0},
-             {5, NodeKind::Hidden, Activation::Gaussian, 0.5}};
+  g.nodes = {
+      {0, NodeKind::Input, Activation::Linear, 0.0},         {1, NodeKind::Input, Activation::Linear, 0.0},
+      {2, NodeKind::Bias, Activation::Linear, 0.0},          {3, NodeKind::Output, Activation::SignedSigmoid, 1.0},
+      {4, NodeKind::Output, Activation::SignedSigmoid, 1.0}, {5, NodeKind::Hidden, Activation::Gaussian, 0.5}};
   g.links = {{100, 0, 5, 1.0, true, 0}, {101, 5, 3, 2.0, true, 0}};
   return g;
 }
@@ -408,8 +413,8 @@ TEST(MutateAddNodeHyperNeat, SplitsForwardLinksOnly) {
   Rng rng(25);
   // Only recurrent links: 3 -> 4 (1 -> 1), 4 -> 3, 3 -> 5 (1 -> 0.5), and a disabled forward one.
   Genome g = hand_genome();
-  g.links = {{100, 0, 5, 1.0, false, 0}, {110, 3, 4, 1.0, true, 0}, {111, 4, 3, 1.0, true, 0},
-             {112, 3, 5, 1.0, true, 0}};
+  g.links = {
+      {100, 0, 5, 1.0, false, 0}, {110, 3, 4, 1.0, true, 0}, {111, 4, 3, 1.0, true, 0}, {112, 3, 5, 1.0, true, 0}};
   InnovationTracker t(1000, 6);
   EXPECT_FALSE(mutate_add_node(g, p, t, 1, rng));
   // The classic rule splits them (and disables the split link).

@@ -33,11 +33,19 @@ std::vector<double> xor_fitness(const Population& pop) {
 
 TEST(PopulationJson, WeightsRoundTripBitForBit) {
   Rng rng(1);
-  std::vector<double> values = {0.1, 1.0 / 3.0, -2.0 / 3.0, 5.0, -5.0, 0.0, -0.0,
+  std::vector<double> values = {0.1,
+                                1.0 / 3.0,
+                                -2.0 / 3.0,
+                                5.0,
+                                -5.0,
+                                0.0,
+                                -0.0,
                                 std::numeric_limits<double>::min(),
                                 std::numeric_limits<double>::denorm_min(),
-                                std::numeric_limits<double>::max(), -DBL_EPSILON,
-                                std::nextafter(1.0, 2.0), 4.999999999999999};
+                                std::numeric_limits<double>::max(),
+                                -DBL_EPSILON,
+                                std::nextafter(1.0, 2.0),
+                                4.999999999999999};
   for (int i = 0; i < 5000; ++i) values.push_back(rng.uniform(-5.0, 5.0));
   for (int i = 0; i < 1000; ++i) {
     // Arbitrary finite bit patterns.
@@ -48,8 +56,10 @@ TEST(PopulationJson, WeightsRoundTripBitForBit) {
   }
   Genome g;
   g.id = 42;
-  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0}, {1, NodeKind::Bias, Activation::Linear, 0.0},
-             {2, NodeKind::Output, Activation::SignedSigmoid, 1.0}, {3, NodeKind::Hidden, Activation::Gaussian},
+  g.nodes = {{0, NodeKind::Input, Activation::Linear, 0.0},
+             {1, NodeKind::Bias, Activation::Linear, 0.0},
+             {2, NodeKind::Output, Activation::SignedSigmoid, 1.0},
+             {3, NodeKind::Hidden, Activation::Gaussian},
              {4, NodeKind::Hidden, Activation::SignedCosine}};
   for (size_t k = 0; k < values.size(); ++k)
     g.links.push_back({static_cast<int64_t>(k) * 3 + 1, static_cast<int32_t>(k % 5), 2 + static_cast<int32_t>(k % 3),
@@ -135,10 +145,12 @@ TEST(PopulationJson, MalformedInputNamesThePath) {
   EXPECT_NE(error_of([&] { genome_from_json(j); }).find("genome.nodes[1].id: out of range"), std::string::npos);
   j = good;
   j["nodes"][0]["kind"] = "sensor";
-  EXPECT_NE(error_of([&] { genome_from_json(j); }).find("genome.nodes[0]: unknown node kind 'sensor'"), std::string::npos);
+  EXPECT_NE(error_of([&] { genome_from_json(j); }).find("genome.nodes[0]: unknown node kind 'sensor'"),
+            std::string::npos);
   j = good;
   j["nodes"][0]["activation"] = "relu";
-  EXPECT_NE(error_of([&] { genome_from_json(j); }).find("genome.nodes[0]: unknown activation function 'relu'"), std::string::npos);
+  EXPECT_NE(error_of([&] { genome_from_json(j); }).find("genome.nodes[0]: unknown activation function 'relu'"),
+            std::string::npos);
   j = good;
   j["links"] = json::object();
   EXPECT_EQ(error_of([&] { genome_from_json(j); }), "genome.links: expected an array, got object");
@@ -157,7 +169,8 @@ TEST(PopulationJson, MalformedInputNamesThePath) {
   EXPECT_EQ(error_of([&] { population_state_from_json(s); }), "population.compatibility_threshold: missing");
   s = population_state_to_json(pop.state());
   s["species_of"][3] = nullptr;
-  EXPECT_EQ(error_of([&] { population_state_from_json(s); }), "population.species_of[3]: expected an integer, got null");
+  EXPECT_EQ(error_of([&] { population_state_from_json(s); }),
+            "population.species_of[3]: expected an integer, got null");
 }
 
 }  // namespace

@@ -20,11 +20,10 @@ TEST(Speciate, GroupsByDistanceToTheFirstFittingRepresentative) {
   NeatParams p;  // c_d = c_e = 2, c_w = 1
   // A family {0,1,2} and a family {10,11,12}: 6 unmatched genes apart (distance 12).
   const std::vector<Genome> genomes = {
-      with_links(0, {{0, 1.0}, {1, 1.0}, {2, 1.0}}),
-      with_links(1, {{10, 1.0}, {11, 1.0}, {12, 1.0}}),
-      with_links(2, {{0, 1.5}, {1, 1.0}, {2, 1.0}}),       // distance 0.5 / 3 to genome 0
+      with_links(0, {{0, 1.0}, {1, 1.0}, {2, 1.0}}),           with_links(1, {{10, 1.0}, {11, 1.0}, {12, 1.0}}),
+      with_links(2, {{0, 1.5}, {1, 1.0}, {2, 1.0}}),            // distance 0.5 / 3 to genome 0
       with_links(3, {{0, 1.0}, {1, 1.0}, {2, 1.0}, {3, 0.0}}),  // one excess gene: 2
-      with_links(4, {{10, -1.0}, {11, 1.0}, {12, 1.0}}),   // 2/3 to genome 1
+      with_links(4, {{10, -1.0}, {11, 1.0}, {12, 1.0}}),        // 2/3 to genome 1
   };
   std::vector<Species> species;
   int32_t next_id = 7;
@@ -65,8 +64,7 @@ TEST(Speciate, KeepsExistingSpeciesAndDropsEmptyOnes) {
   species[0].members = {0, 1, 2};
   species[1].id = 4;
   species[1].representative = with_links(101, {{0, 1.0}, {1, 1.0}});
-  const std::vector<Genome> genomes = {with_links(0, {{0, 1.2}, {1, 1.0}}),
-                                       with_links(1, {{0, 0.8}, {1, 1.0}})};
+  const std::vector<Genome> genomes = {with_links(0, {{0, 1.2}, {1, 1.0}}), with_links(1, {{0, 0.8}, {1, 1.0}})};
   int32_t next_id = 5;
   const auto of = speciate(genomes, species, 3.0, p, next_id, 9);
   ASSERT_EQ(species.size(), 1u) << "species 3 got no member and is gone";
@@ -76,7 +74,7 @@ TEST(Speciate, KeepsExistingSpeciesAndDropsEmptyOnes) {
 }
 
 TEST(AdjustThreshold, MovesTowardsTheTargetWithAFloor) {
-  NeatParams p;  // target 8, step 0.3, floor 0.3
+  NeatParams p;                             // target 8, step 0.3, floor 0.3
   p.threshold_rule = ThresholdRule::Clamp;  // robozoo's; HyperNEAT's in hyperneat_test.cpp
   EXPECT_DOUBLE_EQ(adjust_threshold(6.0, 12, p), 6.3) << "too many species: threshold rises";
   EXPECT_DOUBLE_EQ(adjust_threshold(6.0, 3, p), 5.7) << "too few species: threshold falls";

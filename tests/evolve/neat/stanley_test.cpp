@@ -30,8 +30,11 @@ Genome base(int64_t id) { return test::tiny_genome(id, Activation::SteepenedSigm
 Genome parent_a() {
   Genome g = base(1);
   g.nodes.push_back({4, NodeKind::Hidden, Activation::SteepenedSigmoid, 0.5});
-  g.links = {{0, 0, 3, 1.0, true, 0}, {1, 1, 3, 2.0, false, 0}, {2, 2, 3, 3.0, true, 0},
-             {3, 0, 4, 1.5, true, 1}, {4, 4, 3, -0.5, false, 1}};
+  g.links = {{0, 0, 3, 1.0, true, 0},
+             {1, 1, 3, 2.0, false, 0},
+             {2, 2, 3, 3.0, true, 0},
+             {3, 0, 4, 1.5, true, 1},
+             {4, 4, 3, -0.5, false, 1}};
   return g;
 }
 // b: 0->3 (0), 1->3 (1), 2->3 (2); no hidden node.
@@ -55,7 +58,7 @@ TEST(StanleyCrossover, AveragingGivesTheMeanOfTheParentsWeights) {
   Rng rng(1);
   for (int k = 0; k < 20; ++k) {
     const Genome c = crossover(parent_a(), 2.0, parent_b(), 1.0, p, /*average_weights=*/true, rng);
-    ASSERT_EQ(c.links.size(), 5u);  // a is fitter: its structure
+    ASSERT_EQ(c.links.size(), 5u);       // a is fitter: its structure
     EXPECT_EQ(c.links[0].weight, 0.0);   // (1 + -1) / 2
     EXPECT_EQ(c.links[1].weight, -0.5);  // (2 + -3) / 2
     EXPECT_EQ(c.links[2].weight, 3.5);   // (3 + 4) / 2
@@ -304,8 +307,8 @@ TEST(StanleyPopulation, StagnationIsJudgedBeforeTheImprovementWithoutExemption) 
     for (const auto& g : pop.genomes()) f.push_back(weight_fitness(g));
     std::map<int32_t, int32_t> last;  // species id -> last improvement before this generation
     for (const auto& s : pop.species()) last[s.id] = s.last_improvement;
-    const int32_t champion_species = pop.species_of(static_cast<size_t>(
-        std::max_element(f.begin(), f.end()) - f.begin()));
+    const int32_t champion_species =
+        pop.species_of(static_cast<size_t>(std::max_element(f.begin(), f.end()) - f.begin()));
     pop.advance(f, rng);
     const GenerationReport& rep = pop.last_report();
     for (size_t k = 0; k < rep.species_ids.size(); ++k) {
@@ -596,13 +599,19 @@ TEST(StanleyOptions, ConfigKeysAndDefaults) {
   EXPECT_TRUE(d.split_bias_links);
   EXPECT_FALSE(d.structural_draw_decides);
   EXPECT_TRUE(d.childless_species_stay);  // HyperNEAT keeps a species while it finds members
-  const RunConfig c = config_from_json(
-      {{"neat",
-        {{"mate_average_probability", 0.4}, {"mate_only_probability", 0.2}, {"crossover_rule", "stanley"},
-         {"independent_parents", true}, {"keep_generation_champion", false}, {"stagnation", "stanley"},
-         {"offspring_rounding", "skim"}, {"population_stagnation_generations", 20},
-         {"split_bias_links", false}, {"structural_draw_decides", true}, {"childless_species_stay", true},
-         {"weight_mutation", "stanley"}}}});
+  const RunConfig c = config_from_json({{"neat",
+                                         {{"mate_average_probability", 0.4},
+                                          {"mate_only_probability", 0.2},
+                                          {"crossover_rule", "stanley"},
+                                          {"independent_parents", true},
+                                          {"keep_generation_champion", false},
+                                          {"stagnation", "stanley"},
+                                          {"offspring_rounding", "skim"},
+                                          {"population_stagnation_generations", 20},
+                                          {"split_bias_links", false},
+                                          {"structural_draw_decides", true},
+                                          {"childless_species_stay", true},
+                                          {"weight_mutation", "stanley"}}}});
   EXPECT_EQ(c.neat.mate_average_probability, 0.4);
   EXPECT_EQ(c.neat.mate_only_probability, 0.2);
   EXPECT_EQ(c.neat.crossover_rule, CrossoverRule::Stanley);

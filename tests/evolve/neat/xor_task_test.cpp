@@ -28,8 +28,7 @@ TEST(XorTask, HandMadeSolution) {
   // out = ssig(-5 h + 3.4 * bias), so the mapped output is logistic(-5 h + 3.4).
   Genome g = xor_base();
   g.nodes.push_back({4, NodeKind::Hidden, Activation::Gaussian});
-  g.links = {{0, 0, 4, 1.0, true, 0}, {1, 1, 4, -1.0, true, 0}, {2, 2, 3, 3.4, true, 0},
-             {3, 4, 3, -5.0, true, 0}};
+  g.links = {{0, 0, 4, 1.0, true, 0}, {1, 1, 4, -1.0, true, 0}, {2, 2, 3, 3.4, true, 0}, {3, 4, 3, -5.0, true, 0}};
   const XorResult r = evaluate_xor(g);
   EXPECT_TRUE(r.solved);
   const double same = logistic(-5.0 + 3.4), diff = logistic(-5.0 * std::exp(-1.0) + 3.4);
@@ -146,9 +145,8 @@ TEST(StanleyXor, HalfCountsAsOne) {
   // Stanley's test (out >= 0.5).
   Genome g = steep_base();
   g.nodes.push_back({4, NodeKind::Hidden, Activation::SteepenedSigmoid, 0.5});
-  g.links = {{0, 0, 4, 400.0, true, 0}, {1, 1, 4, 400.0, true, 0}, {2, 2, 4, -600.0, true, 0},
-             {3, 0, 3, 1.0, true, 0},   {4, 1, 3, 1.0, true, 0},   {5, 2, 3, -1.0, true, 0},
-             {6, 4, 3, -2.0, true, 0}};
+  g.links = {{0, 0, 4, 400.0, true, 0}, {1, 1, 4, 400.0, true, 0}, {2, 2, 4, -600.0, true, 0}, {3, 0, 3, 1.0, true, 0},
+             {4, 1, 3, 1.0, true, 0},   {5, 2, 3, -1.0, true, 0},  {6, 4, 3, -2.0, true, 0}};
   XorRules half;
   half.half_is_one = true;
   const XorResult r = evaluate_xor(g, steep_layout(), half);

@@ -87,7 +87,7 @@ TEST(PipeTransport, KilledIdleWorkerIsReportedOnceAndRestarts) {
   EXPECT_EQ(e.worker, 1);
   EXPECT_NE(e.reason.find("signal 9"), std::string::npos) << e.reason;
   EXPECT_EQ(t.pid(1), -1);
-  EXPECT_FALSE(t.send(1, Job{1, {1}}));  // known dead: nothing delivered
+  EXPECT_FALSE(t.send(1, Job{1, {1}}));       // known dead: nothing delivered
   EXPECT_FALSE(t.receive(0.05).has_value());  // reported once only
   EXPECT_FALSE(test::has_zombie_child());
   t.restart(1);
@@ -179,8 +179,7 @@ TEST(PipeTransport, ChildrenHoldOnlyTheirOwnSocket) {
       ASSERT_TRUE(t.send(w, Job{0, {}}));
       const std::string fds = text(next_event(t).result.payload);
       size_t sockets = 0;
-      for (size_t at = fds.find("socket:"); at != std::string::npos; at = fds.find("socket:", at + 1))
-        ++sockets;
+      for (size_t at = fds.find("socket:"); at != std::string::npos; at = fds.find("socket:", at + 1)) ++sockets;
       EXPECT_EQ(sockets, 1u) << "close_inherited_fds=" << close_all << "\n" << fds;
       const bool has_file = fds.find(std::to_string(file) + " -> /dev/null") != std::string::npos;
       EXPECT_EQ(has_file, !close_all) << fds;
@@ -194,10 +193,13 @@ TEST(PipeTransport, DestructorKillsStragglersAndLeavesNoChildren) {
   {
     PipeTransportParams p;
     p.shutdown_grace_s = 0.1;
-    PipeTransport t(2, [](const Bytes& in) -> Bytes {
-      std::this_thread::sleep_for(std::chrono::seconds(60));
-      return in;
-    }, p);
+    PipeTransport t(
+        2,
+        [](const Bytes& in) -> Bytes {
+          std::this_thread::sleep_for(std::chrono::seconds(60));
+          return in;
+        },
+        p);
     ASSERT_TRUE(t.send(0, Job{1, {}}));
     EXPECT_TRUE(test::has_any_child());
   }

@@ -32,9 +32,9 @@ TEST(Protocol, LayoutIsAsDocumented) {
   EXPECT_EQ(f[5], static_cast<uint8_t>(FrameKind::Job));
   EXPECT_EQ(f[6], 0);
   EXPECT_EQ(f[7], 0);
-  EXPECT_EQ(f[8], 0x08);   // little-endian index
+  EXPECT_EQ(f[8], 0x08);  // little-endian index
   EXPECT_EQ(f[15], 0x01);
-  EXPECT_EQ(f[16], 3);     // length
+  EXPECT_EQ(f[16], 3);  // length
   EXPECT_EQ(f[17] | f[18] | f[19], 0);
   EXPECT_EQ(f[20], static_cast<uint8_t>(~3u & 0xFF));  // its complement
   EXPECT_EQ(f[23], 0xFF);
@@ -85,8 +85,7 @@ TEST(Protocol, TruncatedFrameNeedsMoreOnAStreamAndFailsAsAMessage) {
     const DecodeStep step = decode_frame(f.data(), n);
     EXPECT_FALSE(step.frame.has_value()) << n;
     EXPECT_EQ(step.consumed, 0u);
-    EXPECT_THROW(decode_message(Bytes(f.begin(), f.begin() + static_cast<std::ptrdiff_t>(n))), ProtocolError)
-        << n;
+    EXPECT_THROW(decode_message(Bytes(f.begin(), f.begin() + static_cast<std::ptrdiff_t>(n))), ProtocolError) << n;
   }
   const DecodeStep full = decode_frame(f.data(), f.size());
   ASSERT_TRUE(full.frame.has_value());

@@ -45,9 +45,9 @@ TEST(ProjectGeneration, NamesWhatBoundsIt) {
   c.job_seconds.assign(100, 0.01);
   c.job_bytes.assign(100, 5000);
   ClusterParams k;
-  c.root_seconds_per_job = 0.002;  // rank 0 needs 0.2 s for 100 jobs
-  EXPECT_EQ(project_generation(c, 1, k).bound, "evaluations");          // 1 s of work on one worker
-  EXPECT_EQ(project_generation(c, 100, k).bound, "rank 0 messaging");   // 10 ms of work each
+  c.root_seconds_per_job = 0.002;                                      // rank 0 needs 0.2 s for 100 jobs
+  EXPECT_EQ(project_generation(c, 1, k).bound, "evaluations");         // 1 s of work on one worker
+  EXPECT_EQ(project_generation(c, 100, k).bound, "rank 0 messaging");  // 10 ms of work each
   c.serial_seconds = 1.0;
   EXPECT_EQ(project_generation(c, 100, k).bound, "rank 0 serial");
   // More workers never make it slower here.

@@ -91,7 +91,8 @@ TEST(WorkerPool, SameResultsInJobOrderForAnyWorkerCount) {
 }
 
 TEST(WorkerPool, EmptyMapAndLargePayloads) {
-  WorkerPool pool(2, [](const Bytes& in) { return Bytes(in.rbegin(), in.rend()); }, quick());
+  WorkerPool pool(
+      2, [](const Bytes& in) { return Bytes(in.rbegin(), in.rend()); }, quick());
   EXPECT_TRUE(pool.map({}).empty());
   std::vector<Bytes> jobs;
   for (size_t i = 0; i < 4; ++i) {
@@ -190,7 +191,8 @@ TEST(WorkerPool, JobThatAlwaysCrashesFailsTheMapNamingIt) {
 TEST(WorkerPool, MaxAttemptsOfOneFailsOnTheFirstCrash) {
   PoolParams p = quick();
   p.max_attempts = 1;
-  WorkerPool pool(1, [](const Bytes&) -> Bytes { ::_exit(3); }, p);
+  WorkerPool pool(
+      1, [](const Bytes&) -> Bytes { ::_exit(3); }, p);
   try {
     pool.map({Bytes{1}});
     FAIL() << "map() should have failed";

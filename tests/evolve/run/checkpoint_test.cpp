@@ -97,11 +97,10 @@ TEST(Checkpoint, MalformedFilesAreClearErrors) {
 // behaviour. Every integer field now takes JSON integers in its type's range only.
 TEST(Checkpoint, IntegerFieldsRefuseFloatsAndOutOfRangeValues) {
   TempDir dir;
-  nlohmann::json good = nlohmann::json::parse(
-      [&] {
-        write_checkpoint(dir / "c", sample());
-        return robozoo::testing::read_file(dir / "c");
-      }());
+  nlohmann::json good = nlohmann::json::parse([&] {
+    write_checkpoint(dir / "c", sample());
+    return robozoo::testing::read_file(dir / "c");
+  }());
   struct Case {
     const char* key;
     nlohmann::json value;

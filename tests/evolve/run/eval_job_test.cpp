@@ -9,7 +9,8 @@ namespace {
 
 TEST(EvalJob, GenomeTravelsExactly) {
   Rng rng(8);
-  const Genome g = random_evolved_genome(robot_layout(), Regime::Recurrent, NeatParams{}, RandomGenomeParams{}, rng, 77);
+  const Genome g =
+      random_evolved_genome(robot_layout(), Regime::Recurrent, NeatParams{}, RandomGenomeParams{}, rng, 77);
   const Genome back = decode_eval_job(encode_eval_job(g), robot_layout());
   EXPECT_EQ(back.id, g.id);
   EXPECT_EQ(back.nodes, g.nodes);

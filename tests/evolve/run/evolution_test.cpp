@@ -167,7 +167,6 @@ TEST(Evolution, OverlappedRunStoppedMidwayCheckpointsAllItDidAndResumes) {
   }
 }
 
-
 // A failing run does not wait for the champion still simulating: the
 // checkpoint holds the generations before it, and resuming redoes that one.
 TEST(Evolution, OverlappedRunFailingMidwayCheckpointsTheWholeGenerationsAndResumes) {

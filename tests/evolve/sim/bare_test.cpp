@@ -31,7 +31,7 @@ TEST(Bare, CountsTheContactsASimulationOfTheSameWorldSees) {
   const int steps = sim.result().steps_run;
   const long long bare = simulate_bare(r, p, steps);
   EXPECT_EQ(bare, sim.timing().contacts);
-  EXPECT_GT(bare, 0);  // it lands on the ground and rests there
+  EXPECT_GT(bare, 0);      // it lands on the ground and rests there
   EXPECT_LE(bare, steps);  // a sphere on a plane: at most one contact a step
   EXPECT_EQ(simulate_bare(r, p, 0), 0);
 }

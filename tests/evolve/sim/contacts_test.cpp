@@ -69,7 +69,8 @@ TEST(Contacts, ContactJointsAreCreatedAndEmptied) {
   add_contact_joints(w, SimParams{}, cs);
   // Body 0 has its two hinges plus one contact joint per contact involving it.
   int n0 = 0;
-  for (const Contact& c : cs) n0 += r.spheres[c.sphere_a].body == 0 || (c.sphere_b >= 0 && r.spheres[c.sphere_b].body == 0);
+  for (const Contact& c : cs)
+    n0 += r.spheres[c.sphere_a].body == 0 || (c.sphere_b >= 0 && r.spheres[c.sphere_b].body == 0);
   EXPECT_EQ(dBodyGetNumJoints(w.body(0)), 1 + n0);
   dJointGroupEmpty(w.contact_group());
   EXPECT_EQ(dBodyGetNumJoints(w.body(0)), 1);

@@ -11,8 +11,7 @@ namespace robozoo {
 namespace {
 
 // A chain root - jointed sphere(s); each jointed sphere carries one motor neuron.
-Robot neurons(int n, double tau0, double omega0, double tau1 = 1.0, double omega1 = 0.0,
-              uint8_t root_sensors = 0) {
+Robot neurons(int n, double tau0, double omega0, double tau1 = 1.0, double omega1 = 0.0, uint8_t root_sensors = 0) {
   RobotBuilder b;
   int p = b.add_root({0, 0, 0}, 0.2, 1.0, root_sensors);
   p = b.add_jointed(p, {0.2, 0, 0}, 0.2, {0, 1, 0}, 1.0, tau0, omega0);

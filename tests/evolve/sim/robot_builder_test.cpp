@@ -12,8 +12,8 @@ namespace {
 TEST(RobotBuilder, NumbersBodiesJointsNeuronsAndSensorsInGrowthOrder) {
   RobotBuilder b;
   const int root = b.add_root({0, 0, 0}, 0.1, 1.0, kSensorDistance);
-  const int j1 = b.add_jointed(root, {0.1, 0, 0}, 0.2, {0, 2, 0}, 0.5, 0.3, 0.7, 2.0,
-                               kSensorTime | kSensorProprio | kSensorTouch);
+  const int j1 =
+      b.add_jointed(root, {0.1, 0, 0}, 0.2, {0, 2, 0}, 0.5, 0.3, 0.7, 2.0, kSensorTime | kSensorProprio | kSensorTouch);
   b.add_fused(j1, {0.3, 0, 0}, 0.1);
   const int j2 = b.add_jointed(root, {-0.1, 0, 0}, 0.1, {0, 0, 1}, 0.25);
   b.add_fused(j2, {-0.2, 0, 0}, 0.05);

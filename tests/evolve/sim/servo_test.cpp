@@ -51,7 +51,7 @@ TEST(Servo, OnlyTheTwoHingedBodiesCount) {
   const double m = sphere_mass(r.spheres[1]);  // all small spheres are equal
   const auto moments = joint_body_moments(r);
   ASSERT_EQ(moments.size(), 2u);
-  EXPECT_NEAR(moments[0], m * 0.1, 1e-15);            // body 1: sphere 1 on the anchor (0.5,0,0)
+  EXPECT_NEAR(moments[0], m * 0.1, 1e-15);  // body 1: sphere 1 on the anchor (0.5,0,0)
   EXPECT_NEAR(moments[1], m * 0.1, 1e-15);  // min(body 1: 0.1 away, body 2: levers 0.1 + 0.1)
 }
 

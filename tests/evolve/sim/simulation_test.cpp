@@ -85,8 +85,8 @@ TEST(Simulation, ARollingSphereTripsTheSpinRule) {
   EXPECT_EQ(r.outcome, Outcome::RollingSpin);
   EXPECT_EQ(r.steps_run, p.steps);
   EXPECT_GT(r.mean_angular_speed[0], 1.4);
-  EXPECT_GT(r.d_raw, 6.0);   // it did roll towards the target ...
-  EXPECT_EQ(r.d, 0.0);       // ... and scores nothing for it
+  EXPECT_GT(r.d_raw, 6.0);  // it did roll towards the target ...
+  EXPECT_EQ(r.d, 0.0);      // ... and scores nothing for it
   // With both rules on, rule (i) (it touched the ground all the time) comes first.
   Simulation both(test::single_sphere(0.2), SimParams{});
   both.set_body_velocity(0, {0.3, 0, 0}, {0, 1.5, 0});

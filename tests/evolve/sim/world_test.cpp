@@ -63,7 +63,7 @@ TEST(World, InertiaIsTheSumOfTheSpheresAboutTheCentreOfMass) {
   dMass dm;
   dBodyGetMass(w.body(0), &dm);
   const double m = sphere_mass(r.spheres[0]);
-  EXPECT_NEAR(dm.I[0], 2 * 0.4 * m * 0.04, 1e-14);             // I(0,0)
+  EXPECT_NEAR(dm.I[0], 2 * 0.4 * m * 0.04, 1e-14);                 // I(0,0)
   EXPECT_NEAR(dm.I[5], 2 * 0.4 * m * 0.04 + 2 * m * 0.01, 1e-14);  // I(1,1), row stride 4
 }
 

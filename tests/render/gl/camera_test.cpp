@@ -30,8 +30,8 @@ TEST(Camera, FramedSpheresFitInsideTheMargin) {
       for (int a = 0; a < 24; ++a)
         for (int b = 0; b <= 12; ++b) {
           const double th = a * 2 * M_PI / 24, ph = b * M_PI / 12;
-          const Eigen::Vector3d p =
-              centers[i] + radii[i] * Eigen::Vector3d(std::sin(ph) * std::cos(th), std::sin(ph) * std::sin(th), std::cos(ph));
+          const Eigen::Vector3d p = centers[i] + radii[i] * Eigen::Vector3d(std::sin(ph) * std::cos(th),
+                                                                            std::sin(ph) * std::sin(th), std::cos(ph));
           const Eigen::Vector3d q = project_to_pixel(cam, w, h, p);
           lo_x = std::min(lo_x, q.x());
           hi_x = std::max(hi_x, q.x());

@@ -47,7 +47,6 @@ TEST(Image, FillRectAndPasteAreClipped) {
   EXPECT_EQ(dst.at(2, 2), (Rgb{0, 0, 0}));
 }
 
-
 TEST(Image, TranslucentFillRectIsBlendOnEachPixel) {
   // fill_rect looks blended bytes up in a table; blend() computes each pixel.
   Image base(40, 30);

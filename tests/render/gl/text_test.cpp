@@ -46,7 +46,9 @@ TEST(Text, ClearErrors) {
 
 TEST(Text, DecodesUtf8AndReplacesBadBytes) {
   EXPECT_EQ(decode_utf8("a\u00b7\u00d7"), (std::u32string{U'a', 0xb7, 0xd7}));
-  EXPECT_EQ(decode_utf8(std::string("a\xff" "b")), (std::u32string{U'a', 0xfffd, U'b'}));
+  EXPECT_EQ(decode_utf8(std::string("a\xff"
+                                    "b")),
+            (std::u32string{U'a', 0xfffd, U'b'}));
   EXPECT_EQ(decode_utf8(std::string("\xe2\x82")), (std::u32string{0xfffd, 0xfffd}));  // cut short
 }
 

@@ -61,7 +61,6 @@ TEST(Stage, SameSceneSamePixels) {
   EXPECT_EQ(stage.render(v, looking_at_origin()).bytes(), stage.render(v, looking_at_origin()).bytes());
 }
 
-
 /// Scenes that put the background next to every kind of object: spheres near
 /// and far, the target, shadows, outlines, with and without the grid, seen
 /// from low (horizon and the ground's far edge in view) and from above.

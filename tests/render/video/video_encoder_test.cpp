@@ -24,7 +24,8 @@ Image gradient(int w, int h, int shift) {
   Image img(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      img.set(x, y, {static_cast<uint8_t>((x + shift) * 3), static_cast<uint8_t>(y * 4), static_cast<uint8_t>(shift * 9)});
+      img.set(x, y,
+              {static_cast<uint8_t>((x + shift) * 3), static_cast<uint8_t>(y * 4), static_cast<uint8_t>(shift * 9)});
   return img;
 }
 

@@ -22,8 +22,9 @@ std::vector<Image> frames(int w, int h, int n) {
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const bool square = x >= 4 * i && x < 4 * i + 16 && y >= 8 && y < 24;
-        img.set(x, y, {static_cast<uint8_t>(square ? 250 : x * 2), static_cast<uint8_t>(y * 3 + i),
-                       static_cast<uint8_t>(square ? 20 : 128)});
+        img.set(x, y,
+                {static_cast<uint8_t>(square ? 250 : x * 2), static_cast<uint8_t>(y * 3 + i),
+                 static_cast<uint8_t>(square ? 20 : 128)});
       }
     out.push_back(std::move(img));
   }

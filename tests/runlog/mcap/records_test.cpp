@@ -16,10 +16,10 @@ TEST(Records, HeaderBytesByHand) {
 TEST(Records, FooterBytesByHand) {
   Bytes b;
   append(b, Footer{0x0102, 0x0304, 0xA1B2C3D4u});
-  const Bytes want = {0x02, 20, 0, 0, 0, 0, 0, 0, 0,          // opcode, length 20
-                      0x02, 0x01, 0, 0, 0, 0, 0, 0,           // summary_start
-                      0x04, 0x03, 0, 0, 0, 0, 0, 0,           // summary_offset_start
-                      0xD4, 0xC3, 0xB2, 0xA1};                // summary_crc
+  const Bytes want = {0x02, 20,   0,    0,   0, 0, 0, 0, 0,  // opcode, length 20
+                      0x02, 0x01, 0,    0,   0, 0, 0, 0,     // summary_start
+                      0x04, 0x03, 0,    0,   0, 0, 0, 0,     // summary_offset_start
+                      0xD4, 0xC3, 0xB2, 0xA1};               // summary_crc
   EXPECT_EQ(b, want);
   EXPECT_EQ(b.size(), kFooterRecordBytes);
 }
@@ -43,7 +43,7 @@ TEST(Records, ChannelMetadataMapIsLengthPrefixedInBytes) {
   EXPECT_EQ(b[0], 0x04);
   EXPECT_EQ(b[1], 31);
   const size_t map_at = 9 + 2 + 2 + 5 + 8;
-  EXPECT_EQ(b[map_at], 10);  // the map's entries take 10 bytes
+  EXPECT_EQ(b[map_at], 10);     // the map's entries take 10 bytes
   EXPECT_EQ(b[map_at + 4], 1);  // key length
   EXPECT_EQ(b[map_at + 8], 'k');
   EXPECT_EQ(b[map_at + 13], 'v');
@@ -56,9 +56,9 @@ TEST(Records, MessageIndexArrayHoldsPairs) {
   ASSERT_EQ(b.size(), 9u + 38u);
   EXPECT_EQ(b[0], 0x07);
   EXPECT_EQ(b[9], 5);
-  EXPECT_EQ(b[11], 32);      // array bytes
-  EXPECT_EQ(b[15], 100);     // first log time
-  EXPECT_EQ(b[15 + 24], 31); // second offset
+  EXPECT_EQ(b[11], 32);       // array bytes
+  EXPECT_EQ(b[15], 100);      // first log time
+  EXPECT_EQ(b[15 + 24], 31);  // second offset
 }
 
 TEST(Records, DataEndAndSummaryOffset) {

@@ -175,11 +175,11 @@ TEST_F(WriterTest, FileReadsBackWithEveryIndexAndCrc) {
     for (const Record& r : summary) {
       if (r.op == 0x0B) {
         Cursor sc{f, r.content};
-        EXPECT_EQ(sc.u(8), 5u);   // messages
-        EXPECT_EQ(sc.u(2), 1u);   // schemas
-        EXPECT_EQ(sc.u(4), 2u);   // channels
+        EXPECT_EQ(sc.u(8), 5u);  // messages
+        EXPECT_EQ(sc.u(2), 1u);  // schemas
+        EXPECT_EQ(sc.u(4), 2u);  // channels
         sc.u(4), sc.u(4);
-        EXPECT_EQ(sc.u(4), 3u);   // chunks
+        EXPECT_EQ(sc.u(4), 3u);  // chunks
         EXPECT_EQ(sc.u(8), 1000u);
         EXPECT_EQ(sc.u(8), 5000u);
       }

@@ -46,8 +46,8 @@ inline morphology_t make_morphology(const std::vector<int32_t>& parents, std::ve
 
 struct NodeSpec {
   int32_t id;
-  int8_t kind;        ///< 0 input, 1 bias, 2 output, 3 hidden
-  int8_t activation;  ///< 0 sigmoid, 1 cosine, 2 Gaussian
+  int8_t kind;           ///< 0 input, 1 bias, 2 output, 3 hidden
+  int8_t activation;     ///< 0 sigmoid, 1 cosine, 2 Gaussian
   double position = -1;  ///< drawing position; < 0: 0 for inputs, 1 for outputs, 0.5 for hidden nodes
 };
 struct LinkSpec {
@@ -56,7 +56,8 @@ struct LinkSpec {
 };
 
 inline cppn_genome_t make_genome(const std::vector<NodeSpec>& nodes, const std::vector<LinkSpec>& links,
-                            int64_t genome_id = 1, int32_t generation = 0, double fitness = 0, int8_t outcome = 1) {
+                                 int64_t genome_id = 1, int32_t generation = 0, double fitness = 0,
+                                 int8_t outcome = 1) {
   cppn_genome_t g{};
   g.run_id = "test";
   g.generation = generation;

@@ -33,12 +33,12 @@ RunSummary make_run(const std::vector<Gen>& gens) {
 
 TEST(ChampionChanges, NewChampionsTheirTopologyAndGain) {
   const RunSummary run = make_run({
-      {3.0, 0, {-1}, {}},                       // not simulated
-      {15.0, 1, {-1, 0}, {}},                   // gain from an unsimulated champion: left out
-      {15.0, 1, {-1, 0}, {}},                   // no gain: no new champion
-      {15.25, 1, {-1, 0}, {0.1, 0.4}},          // same tree, other radii: same topology, +0.25
-      {16.0, 1, {-1, 0, 0}, {}},                // a new branch: topology changed, +0.75
-      {17.5, 1, {-1, 0, 1}, {}},                // the branch moved: changed, +1.5
+      {3.0, 0, {-1}, {}},               // not simulated
+      {15.0, 1, {-1, 0}, {}},           // gain from an unsimulated champion: left out
+      {15.0, 1, {-1, 0}, {}},           // no gain: no new champion
+      {15.25, 1, {-1, 0}, {0.1, 0.4}},  // same tree, other radii: same topology, +0.25
+      {16.0, 1, {-1, 0, 0}, {}},        // a new branch: topology changed, +0.75
+      {17.5, 1, {-1, 0, 1}, {}},        // the branch moved: changed, +1.5
   });
   const ChampionChanges c = champion_changes(run);
   ASSERT_EQ(c.changes.size(), 3u);

@@ -36,8 +36,8 @@ ExperimentAnalysis hand_made(const std::vector<double>& ff_fitness, const std::v
   };
   a.genotype = {compare("links", "links", "count", {99, 100, 101, 102}, {209, 210, 211, 215}),
                 compare("recurrent_links", "recurrent links", "count", {0, 0, 0, 0}, {110, 111, 110, 112})};
-  a.champion = {compare("topology_changed", "pooled share", "share", {0, 1, 1}, {1, 1, 1, 1, 0},
-                        Samples::PooledEvents)};
+  a.champion = {
+      compare("topology_changed", "pooled share", "share", {0, 1, 1}, {1, 1, 1, 1, 0}, Samples::PooledEvents)};
   return a;
 }
 
@@ -80,7 +80,9 @@ TEST(ClaimVerdicts, PrimaryReproducedOnlyWhenSignificantTheSameWay) {
   ClaimsAssessment c = assess_claims(hand_made({24, 25, 26, 27}, {28, 29, 30, 31}));
   EXPECT_EQ(c.outcome, "reproduced");
   EXPECT_EQ(c.headline.rfind("The paper's fitness result (recurrent CPPNs fitter) is **reproduced** at generation 29 "
-                             "(the last) with 4 feed-forward and 4 recurrent runs", 0), 0u)
+                             "(the last) with 4 feed-forward and 4 recurrent runs",
+                             0),
+            0u)
       << c.headline;
   // The paper's p < 0.001 with 30 against 30: |d| >= 0.895.
   EXPECT_NEAR(row(c, "best_fitness").paper_effect, 0.895002246349802, 1e-9);
@@ -168,7 +170,7 @@ TEST(ClaimVerdicts, OrientationAndConstruction) {
   EXPECT_EQ(paper_orientation("feedforward", "recurrent-zero"), 1);
   EXPECT_EQ(paper_orientation("recurrent-sparse", "feedforward"), -1);
   EXPECT_EQ(paper_orientation("recurrent", "recurrent-zero"), 0);
-  EXPECT_EQ(by_construction("links", "recurrent", "recurrent-zero"), "");  // both start with 209
+  EXPECT_EQ(by_construction("links", "recurrent", "recurrent-zero"), "");      // both start with 209
   EXPECT_EQ(by_construction("links", "feedforward", "recurrent-sparse"), "");  // both 99
   EXPECT_NE(by_construction("cycle_links", "recurrent-sparse", "feedforward"), "");
   EXPECT_EQ(by_construction("joints", "feedforward", "recurrent"), "");

@@ -14,20 +14,26 @@ using testing::NodeSpec;
 TEST(GenotypeStats, CountsNodesAndLinksByHand) {
   // Inputs 0, 1 (bias 4 kind 1) at position 0, outputs 9, 10 at 1; hidden 20 (sigmoid, 0.5),
   // 21 (cosine, 0.75), 22 (Gaussian, 0.6), 23 (Gaussian, 0.5).
-  const cppn_genome_t g = make_genome(
-      {{0, 0, 0}, {4, 1, 0}, {9, 2, 0}, {10, 2, 0}, {20, 3, 0, 0.5}, {21, 3, 1, 0.75}, {22, 3, 2, 0.6},
-       {23, 3, 2, 0.5}},
-      {
-          {0, 20},          // forward (0 -> 0.5)
-          {20, 21},         // forward (0.5 -> 0.75), on the cycle 20 -> 21 -> 22 -> 20
-          {21, 22},         // recurrent (0.75 -> 0.6), on the cycle
-          {22, 20},         // recurrent (0.6 -> 0.5), on the cycle
-          {22, 9},          // forward (0.6 -> 1)
-          {23, 23},         // self-loop: recurrent, a cycle
-          {4, 10},          // forward
-          {10, 0, false},   // disabled: not expressed, so 0 -> ... -> 10 -> 0 is no cycle
-          {23, 10},         // forward
-      });
+  const cppn_genome_t g =
+      make_genome({{0, 0, 0},
+                   {4, 1, 0},
+                   {9, 2, 0},
+                   {10, 2, 0},
+                   {20, 3, 0, 0.5},
+                   {21, 3, 1, 0.75},
+                   {22, 3, 2, 0.6},
+                   {23, 3, 2, 0.5}},
+                  {
+                      {0, 20},         // forward (0 -> 0.5)
+                      {20, 21},        // forward (0.5 -> 0.75), on the cycle 20 -> 21 -> 22 -> 20
+                      {21, 22},        // recurrent (0.75 -> 0.6), on the cycle
+                      {22, 20},        // recurrent (0.6 -> 0.5), on the cycle
+                      {22, 9},         // forward (0.6 -> 1)
+                      {23, 23},        // self-loop: recurrent, a cycle
+                      {4, 10},         // forward
+                      {10, 0, false},  // disabled: not expressed, so 0 -> ... -> 10 -> 0 is no cycle
+                      {23, 10},        // forward
+                  });
   const GenotypeStats s = genotype_stats(g);
   EXPECT_EQ(s.nodes, 8);
   EXPECT_EQ(s.hidden, 4);

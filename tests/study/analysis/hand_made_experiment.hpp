@@ -31,8 +31,7 @@ inline std::vector<HandRun> hand_made_experiment() {
   f1.generations = {
       {4.0, 4.0, 0, 10, {-1}, {}, io, {{0, 9}}, std::nullopt},
       {15.5, 15.5, 1, 11, {-1, 0, 1}, {0.1, 0.2, 0.2}, io, {{0, 9}}, std::vector<double>{0.1, 0.2, 0.2}},
-      {16.0, 16.0, 1, 12, {-1, 0, 1}, {0.1, 0.3, 0.2}, io_sig, {{0, 20}, {20, 9}},
-       std::vector<double>{0.1, 0.3, 0.2}},
+      {16.0, 16.0, 1, 12, {-1, 0, 1}, {0.1, 0.3, 0.2}, io_sig, {{0, 20}, {20, 9}}, std::vector<double>{0.1, 0.3, 0.2}},
   };
   f2.generations = {
       {15.0, 15.0, 1, 20, {-1, 0}, {}, io, {{0, 9}}, std::vector<double>{0.1, 0.1}},
@@ -42,7 +41,14 @@ inline std::vector<HandRun> hand_made_experiment() {
   r1.generations = {
       {15.0, 15.0, 1, 30, {-1, 0}, {}, io, {{0, 9}}, std::vector<double>{0.1, 0.1}},
       {16.0, 16.0, 1, 31, {-1, 0, 1}, {}, io, {{0, 9}}, std::vector<double>{0.1, 0.1, 0.1}},
-      {18.0, 18.0, 1, 32, {-1, 0, 0, 1}, {}, io_cos, {{0, 20}, {20, 9}, {9, 20}},
+      {18.0,
+       18.0,
+       1,
+       32,
+       {-1, 0, 0, 1},
+       {},
+       io_cos,
+       {{0, 20}, {20, 9}, {9, 20}},
        std::vector<double>{0.1, 0.2, 0.2, 0.2}},
   };
   r2.generations = {
@@ -56,9 +62,8 @@ inline std::vector<HandRun> hand_made_experiment() {
 /// Writes the four logs into `dir` as <regime>-s<seed>.lcmlog.
 inline void write_hand_made_experiment(const std::string& dir) {
   for (const auto& run : hand_made_experiment())
-    write_hand_log(dir + "/" + (run.regime == 0 ? "feedforward" : "recurrent") + "-s" + std::to_string(run.seed) +
-                       ".lcmlog",
-                   run);
+    write_hand_log(
+        dir + "/" + (run.regime == 0 ? "feedforward" : "recurrent") + "-s" + std::to_string(run.seed) + ".lcmlog", run);
 }
 
 }  // namespace robozoo::testing

@@ -12,13 +12,13 @@
 namespace robozoo::testing {
 
 struct HandGeneration {
-  double best_fitness = 0;        ///< the champion's fitness
+  double best_fitness = 0;  ///< the champion's fitness
   double best_so_far = 0;
-  int8_t outcome = 1;             ///< the champion's outcome (0: not simulated)
+  int8_t outcome = 1;  ///< the champion's outcome (0: not simulated)
   int64_t champion_id = 0;
-  std::vector<int32_t> parents;   ///< the champion's sphere tree
-  std::vector<double> radii;      ///< its radii (default 0.1)
-  std::vector<NodeSpec> nodes;    ///< its CPPN
+  std::vector<int32_t> parents;  ///< the champion's sphere tree
+  std::vector<double> radii;     ///< its radii (default 0.1)
+  std::vector<NodeSpec> nodes;   ///< its CPPN
   std::vector<LinkSpec> links;
   /// Lowest centre heights of a pose stream published for the champion (none: no poses).
   std::optional<std::vector<double>> pose_min_z;
@@ -34,8 +34,8 @@ struct HandRun {
 
 inline void write_hand_log(const std::string& path, const HandRun& run) {
   EventLogWriter log = EventLogWriter::create(path);
-  const std::string run_id = std::string(run.regime == 0 ? "feedforward" : "recurrent") + "-s" +
-                             std::to_string(run.seed);
+  const std::string run_id =
+      std::string(run.regime == 0 ? "feedforward" : "recurrent") + "-s" + std::to_string(run.seed);
   int64_t t = 1000;
   for (size_t g = 0; g < run.generations.size(); ++g) {
     const HandGeneration& h = run.generations[g];
@@ -47,8 +47,8 @@ inline void write_hand_log(const std::string& path, const HandRun& run) {
     r.seed = run.seed;
     r.regime = run.regime;
     r.population = run.population;
-    r.generations = run.generations_requested > 0 ? run.generations_requested
-                                                   : static_cast<int32_t>(run.generations.size());
+    r.generations =
+        run.generations_requested > 0 ? run.generations_requested : static_cast<int32_t>(run.generations.size());
     r.steps = 2500;
     r.dt = 0.01;
     r.config_json = "{}";

@@ -16,7 +16,7 @@ TEST(InitialRobots, GrowsEachArmsStartAndCountsConsistently) {
   EXPECT_EQ(b.mean_links, 209.0);
   for (const auto& s : {a, b}) {
     EXPECT_LE(s.joint_and_distance, s.with_joint);
-    EXPECT_LE(s.with_joint, s.beyond_root);  // a joint needs a second sphere
+    EXPECT_LE(s.with_joint, s.beyond_root);        // a joint needs a second sphere
     EXPECT_LE(s.simulated, s.joint_and_distance);  // simulation needs a joint and a distance sensor
     EXPECT_LE(s.beyond_root, s.genomes);
     EXPECT_GE(s.mean_spheres, 1.0);

@@ -36,7 +36,8 @@ TEST(PlotScripts, FitnessCurveHoldsItsDataAndRendersAPng) {
   const std::string s = fitness_curve_script(curve(), "fig1.png", "Figure 1");
   EXPECT_NE(s.find("set terminal pngcairo"), std::string::npos);
   EXPECT_NE(s.find("set output \"fig1.png\""), std::string::npos);
-  EXPECT_NE(s.find("4 15 1 20 0.5773502692"), std::string::npos);  // generation 4: {14, 16} and {19, 21, 20}: means 15, 20; s.e. 1, 1/sqrt(3)
+  EXPECT_NE(s.find("4 15 1 20 0.5773502692"),
+            std::string::npos);  // generation 4: {14, 16} and {19, 21, 20}: means 15, 20; s.e. 1, 1/sqrt(3)
   // Generation 4's Student's t: 5 / sqrt(4/3 (1/2 + 1/3)) = 4.74 with df 3, p < 0.05: marked, generation 0
   // (t = 1 / sqrt(10/9) = 0.95) is not.
   EXPECT_LT(curve()[4].student.p, 0.05);
@@ -61,7 +62,7 @@ TEST(PlotScripts, BarPanelsWithStarsAndEmptySamples) {
   };
   const std::string s = comparison_panels_script(list, "bars.png", "Figure 2", 2);
   EXPECT_NE(s.find("set multiplot layout 2,2"), std::string::npos);
-  EXPECT_NE(s.find("***"), std::string::npos);       // joints differ strongly
+  EXPECT_NE(s.find("***"), std::string::npos);      // joints differ strongly
   EXPECT_NE(s.find("1 87.5 "), std::string::npos);  // the share in per cent
   TempDir dir;
   write(dir / "bars.gp", s);

@@ -24,8 +24,8 @@ ReportInputs inputs() {
   in.analysis.champion = {
       compare("topology_changed_per_run", "share of a run's new champions with another topology (per run)", "share",
               {0.5, 0.6, 0.7}, {0.9, 1.0, 0.8}),
-      compare("topology_changed", "new champions with another topology (pooled)", "share", {0, 1, 0, 1},
-              {1, 1, 1, 0}, Samples::PooledEvents)};
+      compare("topology_changed", "new champions with another topology (pooled)", "share", {0, 1, 0, 1}, {1, 1, 1, 0},
+              Samples::PooledEvents)};
   CurvePoint p;
   for (int g = 0; g < 6; ++g) {
     p.generation = g;
@@ -41,8 +41,9 @@ ReportInputs inputs() {
 TEST(Report, HeadlineFirstThenTheTestsThenTheClaims) {
   const std::string md = markdown_report(inputs());
   // Recurrent {20, 21, 22} against {10, 11, 12}: t = 10 / sqrt(1 * 2/3) = 12.25, df 4.
-  const size_t headline = md.find("The paper's fitness result (recurrent CPPNs fitter) is **reproduced** at "
-                                  "generation 2 (the last) with 3 feed-forward and 3 recurrent runs");
+  const size_t headline = md.find(
+      "The paper's fitness result (recurrent CPPNs fitter) is **reproduced** at "
+      "generation 2 (the last) with 3 feed-forward and 3 recurrent runs");
   const size_t tests = md.find("## The tests, fixed before the data");
   const size_t claims = md.find("## The paper's claims beside robozoo's figures");
   ASSERT_NE(headline, std::string::npos) << md;
@@ -117,8 +118,9 @@ TEST(Report, OtherArmsAgainstTheControlAreOneHolmFamily) {
   in.analysis.control.push_back(r);
   // recurrent-zero {25, 27} against {20, 22}: t = 5 / sqrt(2) = 3.54, df 2, p = 0.0715;
   // recurrent-sparse {40, 41, 42} against {10, 11, 12}: t = 36.74, df 4, p < 0.001.
-  in.analysis.other_arms = {{"recurrent-sparse", compare("best_fitness", "f", "fitness units", {10, 11, 12}, {40, 41, 42})},
-                            {"recurrent-zero", compare("best_fitness", "f", "fitness units", {20, 22}, {25, 27})}};
+  in.analysis.other_arms = {
+      {"recurrent-sparse", compare("best_fitness", "f", "fitness units", {10, 11, 12}, {40, 41, 42})},
+      {"recurrent-zero", compare("best_fitness", "f", "fitness units", {20, 22}, {25, 27})}};
   const std::string md = markdown_report(in);
   ASSERT_NE(md.find("### Other arms against the control"), std::string::npos) << md;
   // Holm over the two: 2 x p(sparse) < 0.001; max(that, 1 x 0.0715) = 0.0715.
@@ -143,8 +145,7 @@ TEST(Report, FiguresZooAndCommands) {
   in.target_distance = 50;
   in.outcome_pngs = {"outcomes-feedforward.png"};
   const std::string md = markdown_report(in);
-  EXPECT_NE(md.find("| feed-forward (mean ± s.e., n) | recurrent (sparse start) (mean ± s.e., n) |"),
-            std::string::npos)
+  EXPECT_NE(md.find("| feed-forward (mean ± s.e., n) | recurrent (sparse start) (mean ± s.e., n) |"), std::string::npos)
       << md;
   EXPECT_NE(md.find("7.250 m (recurrent (sparse start))"), std::string::npos) << md;
   EXPECT_NE(md.find("of the 50.0 m from the start to the target: fitness did not come near its ceiling"),

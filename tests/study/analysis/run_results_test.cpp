@@ -69,10 +69,9 @@ void expect_same(const RunAnalysis& a, const RunAnalysis& b) {
   EXPECT_EQ(a.best_outcome, b.best_outcome);
   const MorphologyStats &m = a.morphology, &n = b.morphology;
   for (auto f : {&MorphologyStats::spheres, &MorphologyStats::leaves, &MorphologyStats::joints,
-                 &MorphologyStats::distance_sensors, &MorphologyStats::touch_sensors,
-                 &MorphologyStats::proprio_sensors, &MorphologyStats::time_sensors, &MorphologyStats::mean_radius,
-                 &MorphologyStats::radius_variance, &MorphologyStats::max_depth, &MorphologyStats::ground_spheres,
-                 &MorphologyStats::ground_fraction})
+                 &MorphologyStats::distance_sensors, &MorphologyStats::touch_sensors, &MorphologyStats::proprio_sensors,
+                 &MorphologyStats::time_sensors, &MorphologyStats::mean_radius, &MorphologyStats::radius_variance,
+                 &MorphologyStats::max_depth, &MorphologyStats::ground_spheres, &MorphologyStats::ground_fraction})
     EXPECT_TRUE(same(m.*f, n.*f));
   EXPECT_EQ(m.ground_known, n.ground_known);
   const GenotypeStats &g = a.genotype, &h = b.genotype;
@@ -176,11 +175,16 @@ TEST(RunResults, BadFilesAreRefusedNamingTheFileAndTheField) {
       {[](json& j) { j.erase("generations"); }, "results.generations: missing"},
       {[](json& j) { j["generations"]["mean_fitness"].erase(0); },
        "results.generations.mean_fitness: has 4 entries, expected 5"},
-      {[](json& j) { j["generations"]["outcomes"][2] = json::array({1, 2, 3}); },
+      {[](json& j) {
+         j["generations"]["outcomes"][2] = json::array({1, 2, 3});
+       },
        "results.generations.outcomes[2]: has 3 counts, expected 6"},
-      {[](json& j) { j["generations"]["generation"][3] = 1; }, "results.generations.generation[3]: generations must increase"},
-      {[](json& j) { j["generations"]["best_fitness"][0] = "many"; }, "results.generations.best_fitness[0]: not a number"},
-      {[](json& j) { j["champions"][1]["genome_id"] = 999999; }, "results.champions[1].genome_id: 999999, but generation 1"},
+      {[](json& j) { j["generations"]["generation"][3] = 1; },
+       "results.generations.generation[3]: generations must increase"},
+      {[](json& j) { j["generations"]["best_fitness"][0] = "many"; },
+       "results.generations.best_fitness[0]: not a number"},
+      {[](json& j) { j["champions"][1]["genome_id"] = 999999; },
+       "results.champions[1].genome_id: 999999, but generation 1"},
       {[](json& j) { j["champions"][1]["parents"][0] = 0; }, "results.champions[1].parents[0]"},
       {[](json& j) { j["champions"][0]["joints"] = "01"; }, "results.champions[0].joints: has 2 flags"},
       {[](json& j) { j["run"]["arm"] = "feedforward"; }, "results.run.arm: 'feedforward', but its regime"},

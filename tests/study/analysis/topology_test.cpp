@@ -49,7 +49,7 @@ TEST(Topology, JointsCountOnlyWhenAsked) {
 }
 
 TEST(Topology, MalformedTreesAreRefused) {
-  EXPECT_THROW(topology_code(make_morphology({0, 0})), std::invalid_argument);    // root with a parent
+  EXPECT_THROW(topology_code(make_morphology({0, 0})), std::invalid_argument);      // root with a parent
   EXPECT_THROW(topology_code(make_morphology({-1, 2, 0})), std::invalid_argument);  // parent after child
   EXPECT_THROW(topology_code(make_morphology({-1, -1})), std::invalid_argument);    // two roots
   EXPECT_THROW(topology_code(make_morphology({})), std::invalid_argument);

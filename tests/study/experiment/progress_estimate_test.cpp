@@ -31,7 +31,7 @@ TEST(ProgressEstimate, Durations) {
 
 TEST(ProgressEstimate, ClockShowsTheDateOnlyOnAnotherDay) {
   const std::time_t now = std::time(nullptr);
-  EXPECT_EQ(format_clock(now, now).size(), 5u);            // "HH:MM"
+  EXPECT_EQ(format_clock(now, now).size(), 5u);               // "HH:MM"
   EXPECT_EQ(format_clock(now + 3 * 86400, now).size(), 16u);  // "YYYY-mm-dd HH:MM"
 }
 

@@ -49,7 +49,7 @@ TEST(TrialStatus, NotStartedPartialFinished) {
   f.checkpoint(3, false);  // generations 0-2 done, population holds generation 3
   EXPECT_EQ(trial_status(f.trial, f.p).generations_done, 3);
   EXPECT_EQ(trial_status(f.trial, f.p).elapsed_seconds, 12.5);
-  f.checkpoint(4, true);   // the last generation (4) done: no advance
+  f.checkpoint(4, true);  // the last generation (4) done: no advance
   const TrialStatus s = trial_status(f.trial, f.p);
   EXPECT_EQ(s.state, TrialState::Finished);
   EXPECT_EQ(s.generations_done, 5);

@@ -23,10 +23,8 @@ Outcome trial(const std::string& env, const std::string& args = "") {
 TEST(RobozooTrials, ArrayTasksMapToRegimeAndSeed) {
   TempDir dir;
   const std::string env = "ROBOZOO_DRY_RUN=1 ROBOZOO_RUNS=" + dir.path;
-  const std::vector<std::pair<int, std::string>> cases = {{0, "feedforward-s1"},
-                                                          {29, "feedforward-s117"},
-                                                          {30, "recurrent-s2"},
-                                                          {59, "recurrent-s118"}};
+  const std::vector<std::pair<int, std::string>> cases = {
+      {0, "feedforward-s1"}, {29, "feedforward-s117"}, {30, "recurrent-s2"}, {59, "recurrent-s118"}};
   for (const auto& [task, run] : cases) {
     const Outcome o = trial(env + " SLURM_ARRAY_TASK_ID=" + std::to_string(task), "--preset short");
     EXPECT_EQ(o.status, 0) << o.output;
@@ -49,8 +47,8 @@ TEST(RobozooTrials, ATrialRunsUnderMpirunEqualsALocalRunAndResumes) {
   TempDir dir;
   std::string launcher;
   for (const auto& a : mpirun_args(3)) launcher += a + " ";
-  const std::string env = "ROBOZOO_RUNS=" + dir.path + " ROBOZOO_SEEDS=1 SLURM_ARRAY_TASK_ID=1 ROBOZOO_MPIRUN='" +
-                          launcher + "'";
+  const std::string env =
+      "ROBOZOO_RUNS=" + dir.path + " ROBOZOO_SEEDS=1 SLURM_ARRAY_TASK_ID=1 ROBOZOO_MPIRUN='" + launcher + "'";
   const std::string size = "--population 24 --generations 3 --steps 300 --quiet";
   const Outcome o = trial(env, size);
   ASSERT_EQ(o.status, 0) << o.output;

@@ -29,13 +29,13 @@ namespace {
 struct Check : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-#define REQUIRE(cond, what)                                              \
-  do {                                                                   \
-    if (!(cond)) {                                                       \
-      std::ostringstream why_;                                           \
+#define REQUIRE(cond, what)                                                \
+  do {                                                                     \
+    if (!(cond)) {                                                         \
+      std::ostringstream why_;                                             \
       why_ << "line " << __LINE__ << ": " << #cond << " (" << what << ")"; \
-      throw Check(why_.str());                                           \
-    }                                                                    \
+      throw Check(why_.str());                                             \
+    }                                                                      \
   } while (0)
 
 Bytes text(const std::string& s) { return Bytes(s.begin(), s.end()); }
@@ -141,7 +141,7 @@ void pool_hands_out_dynamically(uint32_t session) {
   t.start("sleep");
   WorkerPool pool(std::move(owned));
   REQUIRE(pool.workers() == 2, "");
-  std::vector<Bytes> jobs = {Bytes{40}};  // 400 ms
+  std::vector<Bytes> jobs = {Bytes{40}};                  // 400 ms
   for (int i = 1; i < 30; ++i) jobs.push_back(Bytes{1});  // 10 ms each
   const std::vector<Bytes> results = pool.map(jobs);
   REQUIRE(results.size() == jobs.size(), "");
@@ -240,7 +240,8 @@ int play_root(const MpiSession& mpi) {
   }
   const bool counted = stats.size() == 3 && stats[0].jobs == 0 && jobs == 66 && busy >= 1.2;
   std::cout << "scenario worker_stats "
-            << (counted ? std::string("ok") : "FAILED: " + std::to_string(jobs) + " jobs, " + std::to_string(busy) + " s")
+            << (counted ? std::string("ok")
+                        : "FAILED: " + std::to_string(jobs) + " jobs, " + std::to_string(busy) + " s")
             << std::endl;
   return failed || !counted ? 1 : 0;
 }
@@ -257,7 +258,8 @@ int play_worker(const MpiSession& session) {
   MpiWorkerStats stats;
   int sessions = 0;
   while (serve_mpi_session(make_work, &stats)) ++sessions;
-  if (sessions != 5) std::cout << "scenario sessions FAILED on rank " << session.rank() << ": " << sessions << std::endl;
+  if (sessions != 5)
+    std::cout << "scenario sessions FAILED on rank " << session.rank() << ": " << sessions << std::endl;
   gather_worker_stats(stats);
   return 0;
 }
@@ -285,8 +287,8 @@ Outcome play_under_mpirun(int np) {
 TEST(MpiTransport, ScenariosOnThreeRanks) {
   const Outcome o = play_under_mpirun(3);
   EXPECT_EQ(o.status, 0) << o.output;
-  for (const char* name : {"round_trip", "failure_comes_back", "pool_hands_out_dynamically",
-                           "hung_rank_fails_the_map", "garbage_is_a_death", "worker_stats"})
+  for (const char* name : {"round_trip", "failure_comes_back", "pool_hands_out_dynamically", "hung_rank_fails_the_map",
+                           "garbage_is_a_death", "worker_stats"})
     EXPECT_NE(o.output.find(std::string("scenario ") + name + " ok"), std::string::npos) << name << "\n" << o.output;
   EXPECT_EQ(o.output.find("FAILED"), std::string::npos) << o.output;
 }
