@@ -7,7 +7,8 @@
 #   tools/build.sh robozoo-evolve ...   # only these targets (and what they link)
 #   tools/build.sh --werror [TARGET...] # warnings are errors (ROBOZOO_WERROR=ON, what CI builds)
 #
-# Environment: BUILD_DIR (default build), JOBS (compile jobs, default: cores).
+# Environment: BUILD_DIR (default build), JOBS (compile jobs, default: cores),
+# CCACHE_DISABLE (set: build as without ccache).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${BUILD_DIR:-build}"
@@ -15,16 +16,16 @@ cmake_args=()
 targets=()
 while [ $# -gt 0 ]; do
   case "$1" in
-    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --werror) cmake_args+=(-DROBOZOO_WERROR=ON); shift ;;
     -*) echo "build.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) targets+=(--target "$1"); shift ;;
   esac
 done
-if command -v ccache >/dev/null 2>&1; then
+if command -v ccache >/dev/null 2>&1 && [ -z "${CCACHE_DISABLE:-}" ]; then
   cmake_args+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DROBOZOO_PCH=OFF)
 else
-  # No compiler cache: precompile the heavy headers instead (the same code, a
+  # No compiler cache (or CCACHE_DISABLE set): precompile the heavy headers instead (the same code, a
   # quicker cold build; ccache would not cache files built that way).
   cmake_args+=(-DROBOZOO_PCH=ON)
 fi
