@@ -8,13 +8,15 @@
 # It clones this repository at COMMIT (default: the one recorded in
 # media/experiment/paper/VERSION, which the first start writes) into DIR/src, builds
 # robozoo-evolve and robozoo-experiment there once, and runs robozoo-experiment under
-# nice 19 with logs in DIR/runs and compact results in DIR/results, milestone after
-# milestone: M1 the four arms (feedforward, recurrent, recurrent-sparse, recurrent-zero),
-# 30 trials each, to generation 30; M2 feedforward and recurrent to generation 60; M3
-# feedforward and recurrent to generation 500. Population 150 and 2,500 steps
-# throughout. Stop it at any time (kill, or the machine stops); the same command
-# resumes where it stood. --collect copies DIR/results/*.results.json into
-# media/experiment/paper/results/. DIR defaults to /var/tmp/robozoo-paper.
+# nice 19 in a session of its own whose autogroup is at nice 19 too (with the kernel's
+# autogroup scheduling, nice ranks a process only within its session), with logs in
+# DIR/runs and compact results in DIR/results, milestone after milestone: M1 the four
+# arms (feedforward, recurrent, recurrent-sparse, recurrent-zero), 30 trials each, to
+# generation 30; M2 feedforward and recurrent to generation 60; M3 feedforward and
+# recurrent to generation 500. Population 150 and 2,500 steps throughout. Stop it at
+# any time (kill, or the machine stops); the same command resumes where it stood.
+# --collect copies DIR/results/*.results.json into media/experiment/paper/results/.
+# DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repo=$(pwd)
@@ -29,7 +31,7 @@ while [ $# -gt 0 ]; do
     --workers) workers=${2:?--workers needs a number}; shift 2 ;;
     --collect) action=collect; shift ;;
     --status) action=status; shift ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "paper_experiment.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -91,6 +93,19 @@ mkdir -p "$dir/results"
 for f in "$paper"/results/*.results.json; do
   [ -e "$f" ] && [ ! -e "$dir/results/$(basename "$f")" ] && cp "$f" "$dir/results/"
 done
+# Runs a command at the lowest priority: nice 19 in a new session whose autogroup is at nice 19
+# too, so that it yields to work in every other session (a build, a shell), not only its own.
+# SIGINT, SIGTERM and SIGHUP to this script are passed on (robozoo-experiment then stops cleanly).
+low_priority() {
+  setsid bash -c 'echo 19 > /proc/self/autogroup 2>/dev/null || true; exec nice -n 19 "$@"' low_priority "$@" &
+  local child=$! rc=0
+  trap 'kill -TERM "$child" 2>/dev/null || true' INT TERM HUP
+  wait "$child" || rc=$?
+  while kill -0 "$child" 2>/dev/null; do rc=0; wait "$child" || rc=$?; done
+  trap - INT TERM HUP
+  return "$rc"
+}
+
 milestone() {  # name, arms, generations
   echo "paper_experiment.sh: $1: $2 to generation $3 ($(date -u +%FT%TZ))"
   # A trial known here only from its compact result (its log and checkpoint stayed on another
@@ -109,7 +124,7 @@ milestone() {  # name, arms, generations
       fi
     done
   done
-  nice -n 19 "$bin/robozoo-experiment" "${common[@]}" --arms "$2" --generations "$3"
+  low_priority "$bin/robozoo-experiment" "${common[@]}" --arms "$2" --generations "$3"
   echo "paper_experiment.sh: $1 done ($(date -u +%FT%TZ))"
 }
 milestone M1 feedforward,recurrent,recurrent-sparse,recurrent-zero 30
