@@ -9,8 +9,8 @@
 #   tools/demo.sh [--port N] [--population N] [--generations N] [--seed N]
 #
 # Defaults: port 8080, population 50, 16 generations, seed 1, recurrent CPPNs, one
-# worker per core (about 8 minutes in all, install and build included, on a fresh
-# 2-core Debian 12 machine).
+# worker per core (about 11 minutes on a 2-core machine without a compiler cache, 9 of
+# them building; the packages' install comes on top).
 # Leaves in runs/: demo.lcmlog (and its checkpoint), demo-zoo.png, demo-champion.mp4,
 # demo-check.txt (the live check's report) and demo-view.txt (the viewer's output).
 # Ctrl-C stops everything it started.
