@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "evolve/core/fnv1a.hpp"
+
 namespace robozoo {
 
 GenomeLayout robot_layout() { return GenomeLayout{}; }
@@ -91,25 +93,8 @@ bool has_cycle(const Genome& g) {
   return false;
 }
 
-namespace {
-struct Fnv {
-  uint64_t h = 1469598103934665603ull;
-  void bytes(const void* p, size_t n) {
-    const auto* c = static_cast<const unsigned char*>(p);
-    for (size_t i = 0; i < n; ++i) {
-      h ^= c[i];
-      h *= 1099511628211ull;
-    }
-  }
-  template <class T>
-  void add(T v) {
-    bytes(&v, sizeof v);
-  }
-};
-}  // namespace
-
 uint64_t genome_hash(const Genome& g) {
-  Fnv f;
+  Fnv1a f;
   f.add(g.id);
   f.add(static_cast<uint64_t>(g.nodes.size()));
   for (const auto& n : g.nodes) {

@@ -2,19 +2,13 @@
 
 #include <cstring>
 
+#include "evolve/core/fnv1a.hpp"
+
 namespace robozoo {
 
 namespace {
 
-struct Fnv {  // FNV-1a, 64 bit
-  uint64_t h = 1469598103934665603ull;
-  void bytes(const void* p, size_t n) {
-    const auto* c = static_cast<const unsigned char*>(p);
-    for (size_t i = 0; i < n; ++i) {
-      h ^= c[i];
-      h *= 1099511628211ull;
-    }
-  }
+struct Fnv : Fnv1a {
   void i64(int64_t v) { bytes(&v, sizeof v); }
   void f64(double v) {
     uint64_t bits;

@@ -10,6 +10,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
+#include "render/gl/image.hpp"
 #include "runlog/run_record.hpp"
 #include "tests/support/small_run.hpp"
 
@@ -65,5 +66,21 @@ inline morphology_t known_robot(const std::string& run_id = "known", int64_t gen
 
 inline bool is_red(uint8_t r, uint8_t g, uint8_t b) { return r > 90 && r > 2 * g && r > 2 * b; }
 inline bool is_blue(uint8_t r, uint8_t g, uint8_t b) { return b > 90 && b > 2 * r && b > g + 40; }
+
+/// How many pixels of a picture are a sphere's red and blue.
+struct Pixels {
+  int red = 0, blue = 0;
+};
+
+inline Pixels count_colours(const Image& img) {
+  Pixels p;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      const Rgb c = img.at(x, y);
+      p.red += is_red(c.r, c.g, c.b);
+      p.blue += is_blue(c.r, c.g, c.b);
+    }
+  return p;
+}
 
 }  // namespace robozoo::render::testing

@@ -41,21 +41,6 @@ render::Image keep_png(const std::vector<uint8_t>& png, const std::string& path)
   return render::read_png(path);
 }
 
-struct Pixels {
-  int red = 0, blue = 0;
-};
-
-Pixels count_colours(const render::Image& img) {
-  Pixels p;
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) {
-      const render::Rgb c = img.at(x, y);
-      p.red += render::testing::is_red(c.r, c.g, c.b);
-      p.blue += render::testing::is_blue(c.r, c.g, c.b);
-    }
-  return p;
-}
-
 TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
   RUN_IN_PRIVATE_NETWORK(400, false);
   TempDir dir;
@@ -92,7 +77,7 @@ TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
   EXPECT_GE(s1["chartPoints"].get<int>(), 1);
   keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 800}}), dir / "view-export.png");
   // The robot's pixels: in the 3D view only (the chart has a red line too).
-  const Pixels p = count_colours(keep_png(browser.screenshot(tab, s1["canvas"]), dir / "view-export-stage.png"));
+  const render::testing::Pixels p = render::testing::count_colours(keep_png(browser.screenshot(tab, s1["canvas"]), dir / "view-export-stage.png"));
   EXPECT_GT(p.red, 30) << s1.dump();
   EXPECT_GT(p.blue, 30) << s1.dump();
   std::cout << "exported champion from file://: genome " << s1["robot"] << ", " << s1["spheres"] << " spheres, "

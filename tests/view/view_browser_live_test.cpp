@@ -50,21 +50,6 @@ pid_t start_view(const TempDir& dir, std::vector<std::string> extra = {}) {
   return pid;
 }
 
-struct Pixels {
-  int red = 0, blue = 0;
-};
-
-Pixels count_colours(const render::Image& img) {
-  Pixels p;
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) {
-      const render::Rgb c = img.at(x, y);
-      p.red += render::testing::is_red(c.r, c.g, c.b);
-      p.blue += render::testing::is_blue(c.r, c.g, c.b);
-    }
-  return p;
-}
-
 /// Writes a screenshot to `path` (and, when ROBOZOO_VIEW_SHOTS names a folder,
 /// a copy there to look at) and decodes it.
 render::Image decode_png(const std::vector<uint8_t>& png, const std::string& path) {
@@ -202,7 +187,7 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   }
   ASSERT_GE(moved(), kVisibleMotion) << "no pair of screenshots spanned motion of the robot in its trajectory ("
                                      << resting << " pairs at rest)";
-  const Pixels p1 = count_colours(one), p2 = count_colours(two);
+  const render::testing::Pixels p1 = render::testing::count_colours(one), p2 = render::testing::count_colours(two);
   EXPECT_GT(p1.red, 30) << s0.dump();
   EXPECT_GT(p1.blue, 30) << s0.dump();
   EXPECT_GT(p2.red, 30);
@@ -235,7 +220,7 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   EXPECT_EQ(sb["robot"], sa["robot"]);
   EXPECT_GT(sb["samples"], 10);
   EXPECT_EQ(sb["dropped"], 0);
-  const Pixels p3 = count_colours(decode_png(late.screenshot(b, sb["canvas"]), dir / "late.png"));
+  const render::testing::Pixels p3 = render::testing::count_colours(decode_png(late.screenshot(b, sb["canvas"]), dir / "late.png"));
   EXPECT_GT(p3.red, 30) << sb.dump();
   EXPECT_GT(p3.blue, 30) << sb.dump();
   std::cout << "live page: " << p1.red << "/" << p2.red << " red, " << p1.blue << "/" << p2.blue << " blue pixels, "
@@ -452,7 +437,7 @@ TEST(ViewBrowser, FrameRateOfAFiftySphereRobot) {
     EXPECT_EQ(j["spheres"], 50);
   }
   const render::Image shot = decode_png(browser.screenshot(a, j["canvas"]), dir / "fifty.png");
-  const Pixels p = count_colours(shot);
+  const render::testing::Pixels p = render::testing::count_colours(shot);
   EXPECT_GT(p.red, 100) << "no robot on the canvas";
   EXPECT_GT(p.blue, 100) << "no robot on the canvas";
   kill_process(view, SIGTERM);
