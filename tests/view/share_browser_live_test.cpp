@@ -77,7 +77,8 @@ TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
   EXPECT_GE(s1["chartPoints"].get<int>(), 1);
   keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 800}}), dir / "view-export.png");
   // The robot's pixels: in the 3D view only (the chart has a red line too).
-  const render::testing::Pixels p = render::testing::count_colours(keep_png(browser.screenshot(tab, s1["canvas"]), dir / "view-export-stage.png"));
+  const render::testing::Pixels p =
+      render::testing::count_colours(keep_png(browser.screenshot(tab, s1["canvas"]), dir / "view-export-stage.png"));
   EXPECT_GT(p.red, 30) << s1.dump();
   EXPECT_GT(p.blue, 30) << s1.dump();
   std::cout << "exported champion from file://: genome " << s1["robot"] << ", " << s1["spheres"] << " spheres, "

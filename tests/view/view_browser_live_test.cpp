@@ -220,7 +220,8 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   EXPECT_EQ(sb["robot"], sa["robot"]);
   EXPECT_GT(sb["samples"], 10);
   EXPECT_EQ(sb["dropped"], 0);
-  const render::testing::Pixels p3 = render::testing::count_colours(decode_png(late.screenshot(b, sb["canvas"]), dir / "late.png"));
+  const render::testing::Pixels p3 =
+      render::testing::count_colours(decode_png(late.screenshot(b, sb["canvas"]), dir / "late.png"));
   EXPECT_GT(p3.red, 30) << sb.dump();
   EXPECT_GT(p3.blue, 30) << sb.dump();
   std::cout << "live page: " << p1.red << "/" << p2.red << " red, " << p1.blue << "/" << p2.blue << " blue pixels, "
