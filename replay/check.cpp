@@ -4,19 +4,12 @@
 #include <map>
 #include <stdexcept>
 
+#include "evolve/core/wall_time.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "replay/log_structure.hpp"
 #include "replay/logged_config.hpp"
 
 namespace robozoo::replay {
-
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 CheckReport check_log(const ScannedLog& scanned, const CheckOptions& options, const CheckProgress& progress) {
   if (!(options.tolerance >= 0.0)) throw std::invalid_argument("--tolerance must be >= 0");

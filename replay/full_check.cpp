@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "evolve/core/wall_time.hpp"
 #include "evolve/io/log_compare.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
@@ -21,10 +22,6 @@
 namespace robozoo::replay {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// A folder made for the re-run and removed with everything in it.
 class WorkDir {

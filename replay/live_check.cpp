@@ -18,17 +18,14 @@
 #include "evolve/run/trajectory.hpp"
 #include "replay/check_report.hpp"
 #include "replay/logged_config.hpp"
+#include "replay/number_text.hpp"
 #include "replay/recompute_cache.hpp"
 #include "runlog/log_index.hpp"
 #include "runlog/regrow.hpp"
 
 namespace robozoo::replay {
 
-namespace {
-
-std::string num(int64_t v) { return std::to_string(v); }
-
-}  // namespace
+namespace {}  // namespace
 
 /// What one run has sent so far.
 struct LiveChecker::Run {

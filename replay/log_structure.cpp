@@ -8,6 +8,7 @@
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/run/trajectory.hpp"
 #include "evolve/sim/outcome.hpp"
+#include "replay/number_text.hpp"
 #include "replay/value_compare.hpp"
 #include "runlog/regrow.hpp"
 
@@ -55,8 +56,6 @@ struct RunState {
   bool open = false;  ///< a block is being gathered
   Block block;
 };
-
-std::string num(int64_t v) { return std::to_string(v); }
 
 class Checker {
  public:

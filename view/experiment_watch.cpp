@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "study/analysis/nan.hpp"
 #include "study/analysis/ttest.hpp"
 #include "study/experiment/trial_plan.hpp"
 #include "evolve/messages/build.hpp"
@@ -20,8 +21,6 @@ namespace robozoo::view {
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The values of an arm's trials at generation g.
 std::vector<double> at_generation(const std::vector<TrialProgress>& trials, const std::string& arm, size_t g) {

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "evolve/core/wall_time.hpp"
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/run/trajectory.hpp"
 #include "evolve/sim/simulation.hpp"
@@ -15,10 +16,6 @@
 namespace robozoo {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::string human_time(double s) {
   if (!std::isfinite(s) || s < 0) return "?";

@@ -9,8 +9,7 @@
 namespace robozoo::render {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-double rad(double deg) { return deg * kPi / 180.0; }
+double rad(double deg) { return deg * M_PI / 180.0; }
 }  // namespace
 
 Eigen::Vector3d view_direction(const ViewAngles& a) {

@@ -12,7 +12,6 @@
 namespace robozoo::render {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 uint32_t add_vertex(Mesh& m, double x, double y, double z, double nx, double ny, double nz) {
   m.positions.insert(m.positions.end(), {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)});
@@ -66,7 +65,7 @@ Mesh make_cylinder(int segments) {
   if (segments < 3) throw std::invalid_argument("make_cylinder: need at least 3 segments");
   Mesh m;
   for (int i = 0; i <= segments; ++i) {
-    const double a = 2.0 * kPi * i / segments, c = std::cos(a), s = std::sin(a);
+    const double a = 2.0 * M_PI * i / segments, c = std::cos(a), s = std::sin(a);
     add_vertex(m, c, s, 0, c, s, 0);
     add_vertex(m, c, s, 1, c, s, 0);
   }
@@ -79,7 +78,7 @@ Mesh make_cylinder(int segments) {
     const uint32_t centre = add_vertex(m, 0, 0, z, 0, 0, nz);
     const uint32_t first = static_cast<uint32_t>(m.num_vertices());
     for (int i = 0; i <= segments; ++i) {
-      const double a = 2.0 * kPi * i / segments;
+      const double a = 2.0 * M_PI * i / segments;
       add_vertex(m, std::cos(a), std::sin(a), z, 0, 0, nz);
     }
     for (int i = 0; i < segments; ++i) {
@@ -97,7 +96,7 @@ Mesh make_ring(double inner, int segments) {
     throw std::invalid_argument("make_ring: inner radius must be in [0, 1) and segments >= 3");
   Mesh m;
   for (int i = 0; i <= segments; ++i) {
-    const double a = 2.0 * kPi * i / segments, c = std::cos(a), s = std::sin(a);
+    const double a = 2.0 * M_PI * i / segments, c = std::cos(a), s = std::sin(a);
     add_vertex(m, inner * c, inner * s, 0, 0, 0, 1);
     add_vertex(m, c, s, 0, 0, 0, 1);
   }

@@ -14,7 +14,6 @@ namespace robozoo::render {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kLods = 5;  // icosphere levels 0..4
 
 void color(Rgb c, float alpha = 1.0f) { glColor4f(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, alpha); }
@@ -232,7 +231,7 @@ void draw_outlines(const std::vector<SphereDraw>& spheres, const Camera& camera,
     const int segments = std::clamp(static_cast<int>(px * 0.5), 12, 96);
     glBegin(GL_LINE_LOOP);
     for (int k = 0; k < segments; ++k) {
-      const double t = 2.0 * kPi * k / segments;
+      const double t = 2.0 * M_PI * k / segments;
       const Eigen::Vector3d p = c + rho * (std::cos(t) * a + std::sin(t) * b);
       glVertex3d(p.x(), p.y(), p.z());
     }
@@ -258,7 +257,7 @@ void SceneRenderer::draw(const SceneView& view, const Camera& camera, int width,
   const LightingUniforms lu = set_camera(camera, width, height, st);
   LitProgram& prog = impl_->program;
   prog.use(lu);
-  const double focal_px = height / (2.0 * std::tan(camera.fov_y_deg * kPi / 360.0));
+  const double focal_px = height / (2.0 * std::tan(camera.fov_y_deg * M_PI / 360.0));
 
   // Every opaque object marks the pixels it covers, so that the background
   // is drawn afterwards only where nothing is: the same picture as drawing it

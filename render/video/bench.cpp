@@ -8,6 +8,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "evolve/core/wall_time.hpp"
 #include "runlog/log_source.hpp"
 #include "runlog/selection.hpp"
 #include "render/video/video_quality.hpp"
@@ -16,9 +17,6 @@
 namespace robozoo::render {
 
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 /// CPU time of every thread of this process: llvmpipe's and libx264's own threads included (s).
 double process_cpu_seconds() {
   timespec ts{};

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "evolve/core/wall_time.hpp"
 #include "render/video/frame_queue.hpp"
 #include "render/scene/overlay.hpp"
 
@@ -15,10 +16,6 @@ namespace robozoo::render {
 namespace {
 /// Frames drawn ahead of the encoder at most (2.7 MB each at 1280x720).
 constexpr int kQueuedFrames = 4;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 Eigen::Vector3d follow_point(const RobotShape& shape, const std::vector<Eigen::Vector3d>& centers) {
   return shape.mass_center(centers);

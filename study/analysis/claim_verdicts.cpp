@@ -6,14 +6,13 @@
 #include <limits>
 
 #include "study/analysis/holm.hpp"
+#include "study/analysis/nan.hpp"
 #include "study/analysis/paper_claims.hpp"
 #include "study/analysis/power.hpp"
 
 namespace robozoo {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool is_recurrent_arm(const std::string& arm) { return arm.rfind("recurrent", 0) == 0; }
 

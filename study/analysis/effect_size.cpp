@@ -5,13 +5,12 @@
 #include <limits>
 #include <stdexcept>
 
+#include "study/analysis/nan.hpp"
 #include "study/analysis/ttest.hpp"
 
 namespace robozoo {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // P(T'(df, ncp) <= t): decreasing in ncp.
 double nct_cdf(double df, double ncp, double t) { return boost::math::cdf(boost::math::non_central_t(df, ncp), t); }

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "study/analysis/nan.hpp"
+
 namespace robozoo {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void mean_ss(const std::vector<double>& x, long double& mean, long double& ss) {
   long double sum = 0;
