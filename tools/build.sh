@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Configures and builds robozoo (Release) into ./build, using every core, through
 # ccache when it is installed (the same objects, sooner on a rebuild or a fresh
-# clone), else with the heavy headers precompiled (ROBOZOO_PCH).
+# clone), else with the heavy headers precompiled and the sources compiled in
+# batches (ROBOZOO_PCH, ROBOZOO_UNITY: the same results, a cold build in half the time).
 #
 #   tools/build.sh                      # every program and test
 #   tools/build.sh robozoo-evolve ...   # only these targets (and what they link)
@@ -23,11 +24,12 @@ while [ $# -gt 0 ]; do
   esac
 done
 if command -v ccache >/dev/null 2>&1 && [ -z "${CCACHE_DISABLE:-}" ]; then
-  cmake_args+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DROBOZOO_PCH=OFF)
+  cmake_args+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DROBOZOO_PCH=OFF
+    -DROBOZOO_UNITY=OFF)
 else
-  # No compiler cache (or CCACHE_DISABLE set): precompile the heavy headers instead (the same code, a
-  # quicker cold build; ccache would not cache files built that way).
-  cmake_args+=(-DROBOZOO_PCH=ON)
+  # No compiler cache (or CCACHE_DISABLE set): precompiled headers and batches instead (a quicker cold
+  # build; ccache would cache neither well). An earlier ccache configuration of the folder is undone.
+  cmake_args+=(-UCMAKE_C_COMPILER_LAUNCHER -UCMAKE_CXX_COMPILER_LAUNCHER -DROBOZOO_PCH=ON -DROBOZOO_UNITY=ON)
 fi
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cmake_args[@]}" >/dev/null
 cmake --build "$BUILD_DIR" -j"${JOBS:-$(nproc)}" "${targets[@]}"

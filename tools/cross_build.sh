@@ -27,11 +27,12 @@ jobs="${JOBS:-$(nproc)}"
 }
 
 # Only the two programs and the libraries they link, no tests, with the heavy
-# headers precompiled (ROBOZOO_PCH: the same code, a quicker cold build; ccache
-# does not cache such files, so it is not used here).
+# headers precompiled and the sources compiled in batches (ROBOZOO_PCH,
+# ROBOZOO_UNITY: a quicker cold build; ccache caches neither well, so it is not
+# used here). The bits must not depend on these either.
 build_other() {  # dir, cmake args...
   local dir=$1; shift
-  cmake -S . -B "$dir" -DBUILD_TESTING=OFF -DROBOZOO_PCH=ON "$@" >/dev/null
+  cmake -S . -B "$dir" -DBUILD_TESTING=OFF -DROBOZOO_PCH=ON -DROBOZOO_UNITY=ON "$@" >/dev/null
   cmake --build "$dir" -j"$jobs" --target robozoo-evolve robozoo-replay
 }
 echo "cross_build.sh: building with clang (build-clang/)"

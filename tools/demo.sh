@@ -37,7 +37,7 @@ done
 url='udpm://239.255.76.67:7667?ttl=0'
 bin=build/bin
 t0=$(date +%s)
-tools/setup.sh
+tools/setup.sh --programs
 tools/build.sh robozoo-evolve robozoo-view robozoo-replay robozoo-render
 echo "demo: built in $(($(date +%s) - t0)) s"
 

@@ -1,30 +1,48 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package robozoo needs to build, test and run.
+# Installs the Debian 12 packages robozoo needs (apt-get, as root or with sudo).
 # Idempotent: runs `apt-get update` and `apt-get install` only when something is missing.
+#
+#   tools/setup.sh             # everything: build, run, test, fuzz, format, the browser and MCAP checks
+#   tools/setup.sh --programs  # only what building and running the programs needs (tools/demo.sh)
 set -euo pipefail
+usage() { sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; }
+programs_only=0
 case "${1:-}" in
   "") ;;
-  -h|--help) echo "tools/setup.sh: installs the Debian 12 packages robozoo needs (apt-get, as root or with sudo); no options"; exit 0 ;;
-  *) echo "setup.sh: unknown option $1 (no options but --help)" >&2; exit 2 ;;
+  --programs) programs_only=1 ;;
+  -h|--help) usage; exit 0 ;;
+  *) echo "setup.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
 esac
+[ $# -le 1 ] || { echo "setup.sh: one option at most (see --help)" >&2; exit 2; }
 
-PACKAGES=(
+# To build and run robozoo-evolve, -replay, -render and -view (and configure the tests).
+PROGRAMS=(
   build-essential cmake pkg-config git
-  liblcm-dev liblcm-bin liblcm-java libglib2.0-dev default-jdk-headless
+  liblcm-dev liblcm-bin libglib2.0-dev
   libode-dev libeigen3-dev
   libosmesa6-dev libglu1-mesa-dev libpng-dev
-  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev ffmpeg
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libfreetype-dev fonts-dejavu-core
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libboost-math-dev libboost-dev
-  libjs-three chromium
-  libgtest-dev gnuplot-nox
-  openmpi-bin libopenmpi-dev
-  iproute2 util-linux
+  libjs-three                # robozoo-view's 3-D scene
+  libgtest-dev               # the tests are configured with the programs
+  openmpi-bin libopenmpi-dev # robozoo-evolve --mpi
   zlib1g-dev                 # CRC-32 (worker frames, MCAP)
-  libzstd-dev liblz4-dev graphviz nodejs npm   # robozoo-log export (MCAP) and cppn; the MCAP check's node
+  libzstd-dev liblz4-dev     # robozoo-log export (MCAP chunks)
+)
+# The rest: tests, the study tools and the development tools.
+DEVELOPMENT=(
+  liblcm-java default-jdk-headless   # lcm-spy and its Java message types
+  ffmpeg                     # ffprobe and ffmpeg, to look at the videos
+  chromium                   # the browser tests
+  gnuplot-nox                # robozoo-stats' figures
+  iproute2 util-linux        # the private network namespaces of the bus tests
+  graphviz nodejs npm        # robozoo-log cppn; the MCAP check's node
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizer runtimes (tools/fuzz.sh)
   clang-format               # tools/format.sh (clang-format 14)
 )
+PACKAGES=("${PROGRAMS[@]}")
+[ "$programs_only" = 1 ] || PACKAGES+=("${DEVELOPMENT[@]}")
 
 missing=()
 for p in "${PACKAGES[@]}"; do
