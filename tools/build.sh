@@ -31,5 +31,11 @@ else
   # build; ccache would cache neither well). An earlier ccache configuration of the folder is undone.
   cmake_args+=(-UCMAKE_C_COMPILER_LAUNCHER -UCMAKE_CXX_COMPILER_LAUNCHER -DROBOZOO_PCH=ON -DROBOZOO_UNITY=ON)
 fi
+# Ninja keeps both cores busy across targets (make builds one target at a time, and a
+# target of one or two batches would leave a core idle); a folder keeps the generator
+# it was first configured with.
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ] && command -v ninja >/dev/null 2>&1; then
+  cmake_args+=(-G Ninja)
+fi
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cmake_args[@]}" >/dev/null
 cmake --build "$BUILD_DIR" -j"${JOBS:-$(nproc)}" "${targets[@]}"

@@ -32,7 +32,9 @@ jobs="${JOBS:-$(nproc)}"
 # used here). The bits must not depend on these either.
 build_other() {  # dir, cmake args...
   local dir=$1; shift
-  cmake -S . -B "$dir" -DBUILD_TESTING=OFF -DROBOZOO_PCH=ON -DROBOZOO_UNITY=ON "$@" >/dev/null
+  local generator=()
+  [ ! -f "$dir/CMakeCache.txt" ] && command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
+  cmake -S . -B "$dir" "${generator[@]}" -DBUILD_TESTING=OFF -DROBOZOO_PCH=ON -DROBOZOO_UNITY=ON "$@" >/dev/null
   cmake --build "$dir" -j"$jobs" --target robozoo-evolve robozoo-replay
 }
 echo "cross_build.sh: building with clang (build-clang/)"

@@ -17,7 +17,7 @@ esac
 
 # To build and run robozoo-evolve, -replay, -render and -view (and configure the tests).
 PROGRAMS=(
-  build-essential cmake pkg-config git
+  build-essential cmake ninja-build pkg-config git
   liblcm-dev liblcm-bin libglib2.0-dev
   libode-dev libeigen3-dev
   libosmesa6-dev libglu1-mesa-dev libpng-dev
