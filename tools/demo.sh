@@ -9,8 +9,8 @@
 #   tools/demo.sh [--port N] [--population N] [--generations N] [--seed N]
 #
 # Defaults: port 8080, population 50, 16 generations, seed 1, recurrent CPPNs, one
-# worker per core (about 11 minutes on a 2-core machine without a compiler cache, 9 of
-# them building; the packages' install comes on top).
+# worker per core (under 10 minutes on a bare 2-core Debian 12 machine: about 4.5 to
+# install the packages, 3.5 to build, 1.5 to run; docs/performance.md).
 # Leaves in runs/: demo.lcmlog (and its checkpoint), demo-zoo.png, demo-champion.mp4,
 # demo-check.txt (the live check's report) and demo-view.txt (the viewer's output).
 # Ctrl-C stops everything it started.
@@ -37,7 +37,7 @@ done
 url='udpm://239.255.76.67:7667?ttl=0'
 bin=build/bin
 t0=$(date +%s)
-tools/setup.sh --programs
+tools/setup.sh --demo
 tools/build.sh robozoo-evolve robozoo-view robozoo-replay robozoo-render
 echo "demo: built in $(($(date +%s) - t0)) s"
 

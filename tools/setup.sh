@@ -3,19 +3,19 @@
 # Idempotent: runs `apt-get update` and `apt-get install` only when something is missing.
 #
 #   tools/setup.sh             # everything: build, run, test, fuzz, format, the browser and MCAP checks
-#   tools/setup.sh --programs  # only what building and running the programs needs (tools/demo.sh)
+#   tools/setup.sh --demo      # only what tools/demo.sh needs: to build the programs and run its four
 set -euo pipefail
 usage() { sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; }
-programs_only=0
+demo_only=0
 case "${1:-}" in
   "") ;;
-  --programs) programs_only=1 ;;
+  --demo) demo_only=1 ;;
   -h|--help) usage; exit 0 ;;
   *) echo "setup.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
 esac
 [ $# -le 1 ] || { echo "setup.sh: one option at most (see --help)" >&2; exit 2; }
 
-# To build and run robozoo-evolve, -replay, -render and -view (and configure the tests).
+# To build every program (and configure the tests), and run robozoo-evolve, -replay, -render and -view.
 PROGRAMS=(
   build-essential cmake ninja-build pkg-config git
   liblcm-dev liblcm-bin libglib2.0-dev
@@ -30,7 +30,7 @@ PROGRAMS=(
   zlib1g-dev                 # CRC-32 (worker frames, MCAP)
   libzstd-dev liblz4-dev     # robozoo-log export (MCAP chunks)
 )
-# The rest: tests, the study tools and the development tools.
+# The rest: the tests, the study tools' figures, lcm-spy and the development tools.
 DEVELOPMENT=(
   liblcm-java default-jdk-headless   # lcm-spy and its Java message types
   ffmpeg                     # ffprobe and ffmpeg, to look at the videos
@@ -42,7 +42,7 @@ DEVELOPMENT=(
   clang-format               # tools/format.sh (clang-format 14)
 )
 PACKAGES=("${PROGRAMS[@]}")
-[ "$programs_only" = 1 ] || PACKAGES+=("${DEVELOPMENT[@]}")
+[ "$demo_only" = 1 ] || PACKAGES+=("${DEVELOPMENT[@]}")
 
 missing=()
 for p in "${PACKAGES[@]}"; do
