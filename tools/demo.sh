@@ -37,6 +37,7 @@ done
 url='udpm://239.255.76.67:7667?ttl=0'
 bin=build/bin
 t0=$(date +%s)
+echo "demo: the run will be live at http://127.0.0.1:$port/ once its programs are built (a few minutes)"
 tools/setup.sh --demo
 tools/build.sh robozoo-evolve robozoo-view robozoo-replay robozoo-render
 echo "demo: built in $(($(date +%s) - t0)) s"
