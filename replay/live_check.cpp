@@ -25,8 +25,6 @@
 
 namespace robozoo::replay {
 
-namespace {}  // namespace
-
 /// What one run has sent so far.
 struct LiveChecker::Run {
   std::string id;

@@ -9,8 +9,8 @@
 #   tools/demo.sh [--port N] [--population N] [--generations N] [--seed N]
 #
 # Defaults: port 8080, population 50, 16 generations, seed 1, recurrent CPPNs, one
-# worker per core (under 10 minutes on a bare 2-core Debian 12 machine: about 4.5 to
-# install the packages, 3.5 to build, 1.5 to run; docs/performance.md).
+# worker per core (under 10 minutes on a bare 2-core Debian 12 machine: about 4 to 4.5
+# to install the packages, 3.5 to build, 1.5 to run; docs/performance.md).
 # Leaves in runs/: demo.lcmlog (and its checkpoint), demo-zoo.png, demo-champion.mp4,
 # demo-check.txt (the live check's report) and demo-view.txt (the viewer's output).
 # Ctrl-C stops everything it started.

@@ -40,6 +40,7 @@ DEVELOPMENT=(
   graphviz nodejs npm        # robozoo-log cppn; the MCAP check's node
   clang libclang-rt-14-dev   # libFuzzer and clang's sanitizer runtimes (tools/fuzz.sh)
   clang-format               # tools/format.sh (clang-format 14)
+  debootstrap                # a bare Debian 12 folder, to time tools/demo.sh as a new machine (docs/performance.md)
 )
 PACKAGES=("${PROGRAMS[@]}")
 [ "$demo_only" = 1 ] || PACKAGES+=("${DEVELOPMENT[@]}")
