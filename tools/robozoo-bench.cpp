@@ -46,7 +46,7 @@ double since(double t0) { return Clock::now() - t0; }
 
 struct Totals {
   int genomes = 0, drawn = 0, simulated = 0;
-  long long queries = 0, steps = 0, spheres = 0, contacts = 0, bare_contacts = 0;
+  long long queries = 0, weight_queries = 0, steps = 0, spheres = 0, contacts = 0, bare_contacts = 0;
   double decode = 0, grow = 0, query = 0, controller = 0, physics = 0, bookkeeping = 0;
   double full = 0, bare = 0;
 };
@@ -79,6 +79,8 @@ void measure(const Genome& g, const EvalParams& eval, bool libm_activations, Tot
   t.query += net.query_seconds();
   t.queries += net.queries();
   t.spheres += static_cast<long long>(robot.spheres.size());
+  const auto ns = static_cast<long long>(robot.sensors.size()), nn = static_cast<long long>(robot.neurons.size());
+  t.weight_queries += ns * nn + nn * (nn + 1) / 2;  // set_ctrnn_weights: sensor x neuron, neuron pairs
   if (!robot.simulate) return;
   ++t.simulated;
   Simulation sim(robot, eval.sim);
@@ -153,6 +155,7 @@ nlohmann::json report(const Totals& t) {
   j["evaluations_per_second"] = t.full > 0 ? t.genomes / t.full : 0.0;
   j["mean_evaluation_ms"] = 1e3 * per(t.full, t.genomes);
   j["cppn_queries_per_robot"] = per(double(t.queries), t.genomes);
+  j["cppn_weight_queries_per_robot"] = per(double(t.weight_queries), t.genomes);
   j["cppn_query_us"] = t.queries ? 1e6 * t.query / double(t.queries) : 0.0;
   j["share"] = {{"cppn_decode", share(t.decode)},
                 {"cppn_queries", share(t.query)},
@@ -180,9 +183,12 @@ void print_one(const std::string& name, const nlohmann::json& j) {
   std::printf("%s: %d genomes (%d simulated, of %d drawn), %.1f spheres, %.0f steps on average\n", name.c_str(),
               j["genomes"].get<int>(), j["simulated"].get<int>(), j["genomes_drawn"].get<int>(),
               j["mean_spheres"].get<double>(), j["mean_steps"].get<double>());
-  std::printf("  %.1f evaluations/s on one core (%.2f ms each), %.0f CPPN queries per robot (%.3f us each)\n",
-              j["evaluations_per_second"].get<double>(), j["mean_evaluation_ms"].get<double>(),
-              j["cppn_queries_per_robot"].get<double>(), j["cppn_query_us"].get<double>());
+  std::printf(
+      "  %.1f evaluations/s on one core (%.2f ms each), %.0f CPPN queries per robot (%.0f of them for weights; "
+      "%.3f us each)\n",
+      j["evaluations_per_second"].get<double>(), j["mean_evaluation_ms"].get<double>(),
+      j["cppn_queries_per_robot"].get<double>(), j["cppn_weight_queries_per_robot"].get<double>(),
+      j["cppn_query_us"].get<double>());
   const auto& s = j["share"];
   std::printf(
       "  time: decode %.1f%%, CPPN queries %.1f%%, rest of growth %.1f%%, controller+sensors %.1f%%, "

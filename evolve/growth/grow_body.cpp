@@ -62,7 +62,8 @@ GrownBody grow_body(CppnProbe& probe, const GrowthParams& params) {
 
   // Per-cloud scratch, allocated once.
   const int n_points = cloud.size();
-  std::vector<int> order;
+  std::vector<int> points, order;  // cloud indices queried; batch columns by m
+  points.reserve(static_cast<size_t>(n_points));
   order.reserve(static_cast<size_t>(n_points));
 
   while (!queue.empty() && static_cast<int>(body.spheres.size()) < max_spheres) {
@@ -71,15 +72,21 @@ GrownBody grow_body(CppnProbe& probe, const GrowthParams& params) {
     const Eigen::Vector3d center = body.spheres[parent].center;
     const double r_parent = body.spheres[parent].radius;
 
-    // 2. Query every cloud point, all in one batch.
-    probe.begin(n_points);
-    for (int k = 0; k < n_points; ++k) probe.set(k, cloud.point(center, r_parent, k), r_parent);
+    // 2. Query the cloud points, all in one batch. A point that rules (b)-(d)
+    //    refuse at every radius is left out: it would be skipped in step 4 whatever
+    //    the CPPN says there, and leaving it out changes no other point's outputs.
+    points.clear();
+    for (int k = 0; k < n_points; ++k)
+      if (!placement.refused_at_any_radius(cloud.point(center, r_parent, k), params.r_min, parent)) points.push_back(k);
+    const int n_queried = static_cast<int>(points.size());
+    probe.begin(n_queried);
+    for (int j = 0; j < n_queried; ++j) probe.set(j, cloud.point(center, r_parent, points[j]), r_parent);
     probe.run();
     order.clear();
-    for (int k = 0; k < n_points; ++k)
-      if (probe.output(k, kOutMatter) > params.t_matter) order.push_back(k);  // rule (a)
-    // 3. By m descending; equal m keep cloud order (a total order, so std::sort
-    //    gives the stable sort's result without its buffer).
+    for (int j = 0; j < n_queried; ++j)
+      if (probe.output(j, kOutMatter) > params.t_matter) order.push_back(j);  // rule (a)
+    // 3. By m descending; equal m keep cloud order (batch columns follow it; a
+    //    total order, so std::sort gives the stable sort's result without its buffer).
     std::sort(order.begin(), order.end(), [&](int a, int b) {
       const double ma = probe.output(a, kOutMatter), mb = probe.output(b, kOutMatter);
       if (ma != mb) return ma > mb;
@@ -87,8 +94,9 @@ GrownBody grow_body(CppnProbe& probe, const GrowthParams& params) {
     });
 
     CppnOutputs o;
-    for (int k : order) {
-      probe.outputs(k, o);
+    for (int j : order) {
+      const int k = points[j];
+      probe.outputs(j, o);
       const Eigen::Vector3d p = cloud.point(center, r_parent, k);
       const double r = sphere_radius(r_parent, o[kOutRadius], params);
       const bool jointed = o[kOutJoint] > params.t_joint;

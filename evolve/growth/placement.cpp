@@ -51,6 +51,10 @@ bool Placement::admissible(const Eigen::Vector3d& p, double radius, int parent, 
   return true;
 }
 
+bool Placement::refused_at_any_radius(const Eigen::Vector3d& p, double r_min, int parent) const {
+  return !admissible(p, r_min, parent, false);
+}
+
 int Placement::add(const Eigen::Vector3d& p, double radius, int parent, bool jointed) {
   if (parent < 0 || parent >= size()) throw std::logic_error("Placement::add: no such parent sphere");
   int c = comp_[parent];

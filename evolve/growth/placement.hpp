@@ -49,6 +49,15 @@ class Placement {
   /// `parent`, fused (jointed = false) or by a hinge.
   bool admissible(const Eigen::Vector3d& p, double radius, int parent, bool jointed) const;
 
+  /// True when admissible(p, radius, parent, jointed) is false for every radius
+  /// >= r_min and both joint choices, now and after any further add(). That is
+  /// exactly !admissible(p, r_min, parent, false): each test's limit grows with
+  /// the radius (rounding is monotone, so also in floating point), a fused sphere
+  /// is exempt from (c) wherever a jointed one is, and further spheres only add
+  /// tests. Growth leaves such cloud points out of its CPPN queries: whatever the
+  /// CPPN says there, they could not change the robot.
+  bool refused_at_any_radius(const Eigen::Vector3d& p, double r_min, int parent) const;
+
   /// Places a sphere (no checks); returns its component.
   int add(const Eigen::Vector3d& p, double radius, int parent, bool jointed);
 

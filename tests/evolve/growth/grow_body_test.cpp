@@ -44,8 +44,12 @@ TEST(GrowBody, JointedSpheresStartComponentsAndCarryMotors) {
   EXPECT_EQ(b.spheres[0].num_children, 1);
   EXPECT_EQ(b.spheres[1].num_children, 1);
   EXPECT_EQ(b.spheres[2].num_children, 0);
-  // Root cloud (1) + sphere 1's cloud (629) queries, plus the root's own query.
-  EXPECT_EQ(probe.count(), 1 + 629 + 629);
+  // The root's own query, the root's cloud (629 points, all admissible), and sphere
+  // 1's cloud less the points no sphere could take: sphere 1 (r = 0.07) sits at
+  // (0.1, 0, 0), and its cloud point at angle t lies closer than r_min = 0.05 to the
+  // root's centre, rule (b), where 0.0149 + 0.014 cos t < 0.0025, that is
+  // |t - pi| < acos(0.885714) = 0.48445 rad: the 97 points k = 266..362.
+  EXPECT_EQ(probe.count(), 1 + 629 + (629 - 97));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -199,6 +200,94 @@ TEST(Placement, RingOfSiblingsOnTheGrowthCircleTouchesItsNeighbours) {
     const double a = phase + M_PI / 3 - 1e-6;
     ASSERT_FALSE(tight.admissible(V(r_init * std::cos(a), r_init * std::sin(a), 0), r_min, 0, true));
   }
+}
+
+// refused_at_any_radius is sound and tight: a point it refuses is inadmissible at
+// every radius >= r_min and for both joint choices, then and after more spheres
+// are placed; a point it lets through is admissible at some radius. Random growth-like placements: every sphere on the circle of radius
+// r_parent around its parent, fused or jointed at random.
+TEST(Placement, RefusedAtAnyRadiusImpliesInadmissibleForEveryRadiusAndJoint) {
+  const GrowthParams gp;
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto radius = [&] { return gp.r_min + (gp.r_max - gp.r_min) * unit(gen) * unit(gen); };
+  long long refused = 0, admissible = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Placement pl(2.0, 64, kTol);
+    std::vector<V> c{V::Zero()};
+    std::vector<double> r{gp.r_init};
+    pl.add_root(c[0], r[0]);
+    const int placed = 2 + trial;
+    while (pl.size() < placed) {
+      const int parent = static_cast<int>(unit(gen) * pl.size());
+      const double a = 2 * M_PI * unit(gen);
+      const V p = c[parent] + r[parent] * V(std::cos(a), std::sin(a), 0);
+      const double rr = radius();
+      const bool jointed = unit(gen) < 0.5;
+      if (!pl.admissible(p, rr, parent, jointed)) continue;
+      pl.add(p, rr, parent, jointed);
+      c.push_back(p);
+      r.push_back(rr);
+    }
+    // Some points: refused now (checked again after 8 more spheres).
+    std::vector<std::pair<V, int>> held;
+    for (int k = 0; k < 400; ++k) {
+      const int parent = static_cast<int>(unit(gen) * pl.size());
+      const double a = 2 * M_PI * unit(gen);
+      const V p = c[parent] + r[parent] * V(std::cos(a), std::sin(a), 0);
+      const bool refuse = pl.refused_at_any_radius(p, gp.r_min, parent);
+      // The tested radii: r_min itself, its neighbours above, the cap, and random ones.
+      std::vector<double> radii{gp.r_min, std::nextafter(gp.r_min, 1.0), gp.r_min * (1 + 1e-12), gp.r_max};
+      for (int i = 0; i < 6; ++i) radii.push_back(radius());
+      bool any = false;
+      for (double rr : radii)
+        for (bool jointed : {false, true}) any = any || pl.admissible(p, rr, parent, jointed);
+      if (refuse) {
+        ASSERT_FALSE(any) << "trial " << trial << " point " << k;
+        ++refused;
+        held.emplace_back(p, parent);
+      } else {  // and it is tight: a point it lets through is admissible at some radius
+        ASSERT_TRUE(any) << "trial " << trial << " point " << k;
+        ++admissible;
+      }
+    }
+    int extra = 0;
+    while (extra < 8) {
+      const int parent = static_cast<int>(unit(gen) * pl.size());
+      const double a = 2 * M_PI * unit(gen);
+      const V p = c[parent] + r[parent] * V(std::cos(a), std::sin(a), 0);
+      if (!pl.admissible(p, gp.r_min, parent, false)) continue;
+      pl.add(p, gp.r_min, parent, false);
+      c.push_back(p);
+      r.push_back(gp.r_min);
+      ++extra;
+    }
+    for (const auto& [p, parent] : held) {
+      ASSERT_TRUE(pl.refused_at_any_radius(p, gp.r_min, parent));
+      for (bool jointed : {false, true}) ASSERT_FALSE(pl.admissible(p, gp.r_min, parent, jointed));
+    }
+  }
+  // The bound is not vacuous either way: it refuses many points and lets admissible ones through.
+  EXPECT_GT(refused, 2000);
+  EXPECT_GT(admissible, 2000);
+}
+
+TEST(Placement, RefusedAtAnyRadiusAtTheEdges) {
+  Placement pl(2.0, 8, kTol);
+  pl.add_root(V::Zero(), 0.1);
+  EXPECT_TRUE(pl.refused_at_any_radius(V(2.0 * (1 + 2e-9), 0, 0), 0.05, 0));  // (d)
+  EXPECT_FALSE(pl.refused_at_any_radius(V(2.0, 0, 0), 0.05, 0));
+  pl.add(V(0.1, 0, 0), 0.05, 0, true);   // component 1, hinged to the root's
+  pl.add(V(0.15, 0, 0), 0.05, 1, true);  // component 2, hinged to component 1
+  // (b): closer than r_min to a centre other than the parent's.
+  EXPECT_TRUE(pl.refused_at_any_radius(V(0.1, 0.049, 0), 0.05, 0));
+  EXPECT_FALSE(pl.refused_at_any_radius(V(0.1, 0.049, 0), 0.05, 1));  // that centre is the parent
+  // (c): sphere 2 (component 2) is exempt for a child of sphere 1 when fused (a child
+  // component of component 1), so it refuses only by (b) there...
+  EXPECT_FALSE(pl.refused_at_any_radius(V(0.15, 0.06, 0), 0.05, 1));
+  // ...but a child of the root meets component 2, joined to neither choice's component.
+  EXPECT_TRUE(pl.refused_at_any_radius(V(0.15, 0.099, 0), 0.05, 0));
+  EXPECT_FALSE(pl.refused_at_any_radius(V(0.15, 0.101, 0), 0.05, 0));
 }
 
 TEST(Placement, RejectsABadTolerance) {
