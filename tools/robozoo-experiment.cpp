@@ -44,7 +44,10 @@ struct Experiment {
     t.generations_total = static_cast<int64_t>(trials.size()) * params.generations;
     for (const auto& s : status) {
       t.generations_done += s.generations_done;
-      t.seconds_spent += s.elapsed_seconds;
+      if (s.time_known)
+        t.seconds_spent += s.elapsed_seconds;
+      else
+        t.generations_untimed += s.generations_done;
     }
     return t;
   }
@@ -116,7 +119,7 @@ void print_status(const Experiment& e) {
     char line[200];
     std::snprintf(line, sizeof line, "%-21s %-12s %5d/%-6d %s\n", e.trials[i].name().c_str(),
                   state_name(e.status[i].state).c_str(), e.status[i].generations_done, e.params.generations,
-                  format_duration(e.status[i].elapsed_seconds).c_str());
+                  e.status[i].time_known ? format_duration(e.status[i].elapsed_seconds).c_str() : "?");
     std::cout << line;
   }
   const ProgressEstimate est = estimate_progress(e.totals());
@@ -241,8 +244,13 @@ Experiment plan_experiment(const Options& o, std::vector<bool>& from_results) {
                                   " generations, but its log and checkpoint are not in " + p.out_dir +
                                   ": it cannot be extended to " + std::to_string(p.generations) +
                                   " (copy <trial>.lcmlog and its .checkpoint there)");
-    e.status.back().state = TrialState::Finished;
-    e.status.back().generations_done = p.generations;
+    TrialStatus& s = e.status.back();
+    s.state = TrialState::Finished;
+    s.generations_done = p.generations;
+    // Its time, for the estimate: the run's, pro rata when it ran further than asked.
+    s.time_known = r.has_evolve_seconds && !r.run.generations.empty();
+    if (s.time_known)
+      s.elapsed_seconds = r.evolve_seconds * p.generations / static_cast<double>(r.run.generations.size());
     from_results.back() = true;
   }
   return e;

@@ -15,10 +15,11 @@ ProgressEstimate estimate_progress(const ProgressTotals& t) {
     e.known = true;
     return e;
   }
-  if (t.generations_done > 0 && t.seconds_spent > 0) {
+  const int64_t timed = t.generations_done - t.generations_untimed;
+  if (timed > 0 && t.seconds_spent > 0) {
     e.known = true;
-    e.remaining_seconds = t.seconds_spent / static_cast<double>(t.generations_done) *
-                          static_cast<double>(t.generations_total - t.generations_done);
+    e.remaining_seconds =
+        t.seconds_spent / static_cast<double>(timed) * static_cast<double>(t.generations_total - t.generations_done);
   }
   return e;
 }

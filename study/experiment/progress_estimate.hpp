@@ -2,8 +2,10 @@
 // Progress of a whole experiment and an estimate of when it will finish.
 //
 // The estimate divides the wall time robozoo-evolve has spent on the
-// experiment's trials (their checkpoints' elapsed_seconds) by the generations
-// they finished, and multiplies by the generations left. Later generations of a
+// experiment's trials (their checkpoints' elapsed_seconds, or their compact
+// results' evolve_seconds) by the generations it was spent on, and multiplies by
+// the generations left. Generations done whose time is unknown (a compact result
+// without it) count as done, but not towards the time per generation. Later generations of a
 // run cost more than early ones (more robots earn simulation), so the estimate
 // is low until the first trials have finished; trials run seed by seed, so it
 // settles after the first pair.
@@ -14,9 +16,10 @@
 namespace robozoo {
 
 struct ProgressTotals {
-  int64_t generations_total = 0;  ///< generations of every trial (count)
-  int64_t generations_done = 0;   ///< finished generations (count)
-  double seconds_spent = 0;       ///< robozoo-evolve's wall time on those generations (s)
+  int64_t generations_total = 0;    ///< generations of every trial (count)
+  int64_t generations_done = 0;     ///< finished generations (count)
+  double seconds_spent = 0;         ///< robozoo-evolve's wall time on those generations (s)
+  int64_t generations_untimed = 0;  ///< of generations_done, those seconds_spent leaves out (count)
 };
 
 struct ProgressEstimate {

@@ -16,6 +16,7 @@ struct TrialStatus {
   TrialState state = TrialState::NotStarted;
   int32_t generations_done = 0;  ///< finished generations (count)
   double elapsed_seconds = 0;    ///< robozoo-evolve's wall time on the trial so far (s)
+  bool time_known = true;        ///< false: elapsed_seconds is unknown (a compact result without it)
 };
 
 /// The status of `t` in an experiment of p.generations generations. A trial

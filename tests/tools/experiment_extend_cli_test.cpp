@@ -4,7 +4,8 @@
 // run messages written before the extension say the generations they were
 // started for); their compact results are rewritten; the other arms are left
 // alone; a trial without its checkpoint is a clear error, and a trial known
-// only from its compact result is done when it reached the generations asked.
+// only from its compact result is done when it reached the generations asked
+// (its time, for --status and the estimate, is the result's).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -104,6 +105,22 @@ TEST(ExperimentExtendCli, WithoutItsCheckpointATrialCannotBeExtended) {
   EXPECT_EQ(done.status, 0) << done.output;
   EXPECT_NE(done.output.find("2 finished (skipped), 0 to resume, 0 to start"), std::string::npos) << done.output;
   EXPECT_FALSE(file_exists(other / "exp/recurrent-s2.lcmlog"));
+  // --status there takes each trial's time from its compact result (it says "?" when the
+  // result has none), and estimates from the timed trials alone.
+  const std::string timed = other / "timed";
+  fs::create_directories(timed);
+  for (const char* trial : {"feedforward-s1", "recurrent-s2"}) {
+    RunResults r = read_run_results(results + "/" + trial + ".results.json");
+    r.has_evolve_seconds = std::string(trial) == "feedforward-s1";
+    r.evolve_seconds = 3600;
+    write_run_results(timed + "/" + trial + ".results.json", r);
+  }
+  const auto status = run_shell(join(driver(other / "exp", 2, {"--results", timed, "--status"})));
+  EXPECT_EQ(status.status, 0) << status.output;
+  EXPECT_NE(status.output.find("feedforward-s1        finished         2/2      1h00m"), std::string::npos)
+      << status.output;
+  EXPECT_NE(status.output.find("recurrent-s2          finished         2/2      ?"), std::string::npos)
+      << status.output;
   const auto beyond = run_shell(join(driver(other / "exp", 3, {"--results", results})));
   EXPECT_EQ(beyond.status, 2) << beyond.output;
   EXPECT_NE(beyond.output.find("feedforward-s1.results.json holds feedforward-s1 at 2 generations, but its log and "

@@ -21,6 +21,17 @@ TEST(ProgressEstimate, UnknownBeforeTheFirstGenerationDoneWhenFinished) {
   EXPECT_DOUBLE_EQ(done.remaining_seconds, 0.0);
 }
 
+TEST(ProgressEstimate, GenerationsOfUnknownTimeCountAsDoneButNotTowardsTheRate) {
+  // 60 of 120 done, 20 of them in 400 s (20 s each), 40 from results without a time:
+  // half done, 60 left at 20 s.
+  const ProgressEstimate e = estimate_progress({120, 60, 400.0, 40});
+  EXPECT_TRUE(e.known);
+  EXPECT_DOUBLE_EQ(e.fraction, 0.5);
+  EXPECT_DOUBLE_EQ(e.remaining_seconds, 1200.0);
+  // None timed: no estimate, however many are done.
+  EXPECT_FALSE(estimate_progress({120, 60, 0.0, 60}).known);
+}
+
 TEST(ProgressEstimate, Durations) {
   EXPECT_EQ(format_duration(45.2), "45s");
   EXPECT_EQ(format_duration(725), "12m05s");
