@@ -1,0 +1,107 @@
+// tools/paper_experiment.sh at toy sizes (--bin: this build's programs): each
+// milestone keeps its own compact results, a milestone finished on this machine
+// is not run again (so its results are not rewritten from logs a later milestone
+// extended), --collect copies every milestone's results, and on a new machine the
+// committed results stand for their trials while the rest runs again from
+// generation 0 and repeats what the first machine computed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo {
+namespace {
+
+using namespace robozoo::testing;
+namespace fs = std::filesystem;
+
+std::string script(const TempDir& t, const std::string& dir, const std::string& extra = "") {
+  return "bash '" + std::string(ROBOZOO_SOURCE_DIR) + "/tools/paper_experiment.sh' --bin '" +
+         std::string(ROBOZOO_BIN_DIR) + "' --paper '" + (t / "paper") + "' --dir '" + dir +
+         "' --trials 1 --population 6 --steps 100 --generations 2,3,4 --workers 1 " + extra + " </dev/null";
+}
+
+nlohmann::json results(const std::string& path) { return nlohmann::json::parse(read_file(path)); }
+
+/// Generations the result holds (its columns, one entry per generation).
+size_t generations(const std::string& path) { return results(path).at("generations").at("generation").size(); }
+
+/// The result without the run's wall time, which differs from run to run.
+nlohmann::json timeless(const std::string& path) {
+  nlohmann::json j = results(path);
+  j.erase("evolve_seconds");
+  return j;
+}
+
+TEST(PaperExperimentCli, MilestonesKeepTheirOwnResultsAndAreNotRunTwice) {
+  TempDir t;
+  const std::string d = t / "d";
+  const Outcome first = run_shell(script(t, d));
+  ASSERT_EQ(first.status, 0) << first.output;
+  for (const char* trial : {"feedforward-s1", "recurrent-s2", "recurrent-sparse-s3", "recurrent-zero-s4"})
+    EXPECT_EQ(generations(d + "/results/" + trial + ".results.json"), 2u) << trial;
+  for (const char* trial : {"feedforward-s1", "recurrent-s2"}) {
+    EXPECT_EQ(generations(d + "/m2/results/" + trial + ".results.json"), 3u) << trial;
+    EXPECT_EQ(generations(d + "/m3/results/" + trial + ".results.json"), 4u) << trial;
+  }
+  EXPECT_FALSE(fs::exists(d + "/m2/results/recurrent-sparse-s3.results.json"));
+  for (const char* m : {"M1", "M2", "M3"}) EXPECT_TRUE(fs::exists(d + "/" + m + ".done")) << m;
+
+  // Again: nothing runs, and M1's results stay those of generation 2 although the
+  // logs beside them now reach generation 4.
+  const std::string m1_before = read_file(d + "/results/feedforward-s1.results.json");
+  const Outcome again = run_shell(script(t, d));
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("M1 finished before on this machine"), std::string::npos) << again.output;
+  EXPECT_NE(again.output.find("M3 finished before on this machine"), std::string::npos) << again.output;
+  EXPECT_EQ(generations(d + "/results/feedforward-s1.results.json"), 2u);
+  EXPECT_TRUE(read_file(d + "/results/feedforward-s1.results.json") == m1_before) << "M1's result was rewritten";
+
+  // --collect: every milestone's results, byte for byte, in its own folder.
+  const Outcome collect = run_shell(script(t, d, "--collect"));
+  ASSERT_EQ(collect.status, 0) << collect.output;
+  EXPECT_NE(collect.output.find("M1: 4 compact results"), std::string::npos) << collect.output;
+  EXPECT_NE(collect.output.find("M2: 2 compact results"), std::string::npos) << collect.output;
+  EXPECT_TRUE(read_file(t / "paper/results/feedforward-s1.results.json") == m1_before);
+  EXPECT_TRUE(read_file(t / "paper/m2/results/recurrent-s2.results.json") ==
+              read_file(d + "/m2/results/recurrent-s2.results.json"));
+  EXPECT_EQ(generations(t / "paper/m3/results/recurrent-s2.results.json"), 4u);
+}
+
+TEST(PaperExperimentCli, ANewMachineCountsCommittedResultsAndRepeatsTheRest) {
+  TempDir t;
+  const std::string d = t / "d";
+  ASSERT_EQ(run_shell(script(t, d)).status, 0);
+  ASSERT_EQ(run_shell(script(t, d, "--collect")).status, 0);
+  // Only M1 was committed: M2's trials (known here from their generation-2 results
+  // alone) run again from generation 0.
+  fs::remove_all(t / "paper/m2");
+  fs::remove_all(t / "paper/m3");
+  const std::string other = t / "other";
+  const Outcome o = run_shell(script(t, other));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_FALSE(fs::exists(other + "/runs/recurrent-sparse-s3.lcmlog"));  // M1's trials ran nowhere here
+  EXPECT_TRUE(fs::exists(other + "/runs/recurrent-s2.lcmlog"));
+  for (const char* trial : {"feedforward-s1", "recurrent-s2"}) {
+    const std::string name = std::string(trial) + ".results.json";
+    EXPECT_TRUE(read_file(other + "/results/" + name) == read_file(d + "/results/" + name)) << trial;
+    // A run is deterministic: run afresh, each milestone repeats the first machine's.
+    EXPECT_EQ(timeless(other + "/m2/results/" + name), timeless(d + "/m2/results/" + name)) << trial;
+    EXPECT_EQ(timeless(other + "/m3/results/" + name), timeless(d + "/m3/results/" + name)) << trial;
+  }
+}
+
+TEST(PaperExperimentCli, RefusesBadSizes) {
+  TempDir t;
+  const Outcome o = run_shell("bash '" + std::string(ROBOZOO_SOURCE_DIR) + "/tools/paper_experiment.sh' --dir '" +
+                              (t / "d") + "' --generations 30,60 </dev/null");
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("not a positive count"), std::string::npos) << o.output;
+}
+
+}  // namespace
+}  // namespace robozoo
