@@ -26,7 +26,9 @@
 # resumes where it stood: trials a milestone finished elsewhere count from their
 # committed compact results, the others start again from generation 0 where their
 # logs and checkpoints are not here.
-# --collect copies each milestone's compact results into media/experiment/paper/.
+# --collect copies each milestone's compact results into media/experiment/paper/ and
+# checks that each later milestone's trials repeat the earlier one's generations
+# (build/bin/robozoo-stats --same-as; exit 1 when one does not).
 # DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -54,7 +56,7 @@ while [ $# -gt 0 ]; do
     --generations) generations=${2:?--generations needs G1,G2,G3}; shift 2 ;;
     --collect) action=collect; shift ;;
     --status) action=status; shift ;;
-    -h|--help) sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,32p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "paper_experiment.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -71,6 +73,10 @@ milestones=(
 )
 
 if [ "$action" = collect ]; then
+  # A later milestone's trials must repeat the earlier one's generations (runs are
+  # deterministic): robozoo-stats --same-as checks it, with this checkout's build.
+  stats="${bin:-build/bin}/robozoo-stats"
+  prev_name="" prev_folder="" status=0
   for m in "${milestones[@]}"; do
     read -r name _ _ folder <<<"$m"
     n=0
@@ -81,8 +87,20 @@ if [ "$action" = collect ]; then
       n=$((n + 1))
     done
     echo "paper_experiment.sh: $name: $n compact results in $paper/$folder/"
+    if [ -n "$prev_name" ] && [ -d "$paper/$folder" ] && [ -d "$paper/$prev_folder" ]; then
+      if [ ! -x "$stats" ]; then
+        echo "paper_experiment.sh: $name: not checked against $prev_name's results: no $stats (tools/build.sh robozoo-stats)"
+      elif check=$("$stats" "$paper/$folder" --same-as "$paper/$prev_folder" 2>&1); then
+        echo "paper_experiment.sh: $name: $(tail -n 1 <<<"$check") ($prev_name's)"
+      else
+        echo "paper_experiment.sh: $name: its results do not repeat $prev_name's generations:" >&2
+        grep -v ' agree$' <<<"$check" >&2
+        status=1
+      fi
+    fi
+    prev_name=$name prev_folder=$folder
   done
-  exit 0
+  exit $status
 fi
 
 if [ -z "$bin" ]; then

@@ -10,6 +10,7 @@
 
 #include <iostream>
 
+#include "study/analysis/results_agreement.hpp"
 #include "study/analysis/stats_job.hpp"
 #include "evolve/core/version.hpp"
 #include "util/exit_status.hpp"
@@ -25,7 +26,10 @@ int main(int argc, char** argv) {
       "with its 95 % CI and the power at the paper's effect; write CSV tables, gnuplot PNGs, zoo sheets and\n"
       "report.md into --out (default DIR/stats). A DIR without logs is read as a folder of compact results\n"
       "(*.results.json, robozoo-experiment's results/ folder): the same report, without zoo sheets.\n"
-      "--export-results OUT writes the compact results of DIR's logs into OUT instead of a report."};
+      "--export-results OUT writes the compact results of DIR's logs into OUT instead of a report.\n"
+      "--same-as OTHER checks that each trial whose compact result is in both DIR and OTHER (e.g. one run to\n"
+      "generation 30, one to 60) agrees over the generations both hold, field for field, instead of a report:\n"
+      "exit 0 when all agree, 1 at any difference (named: trial, generation, field) or when none is in both."};
   StatsOptions o;
   bool no_plots = false, no_zoo = false;
   app.add_option("DIR", o.log_dir, "folder of the runs' logs, or of their compact results")->required();
@@ -33,6 +37,10 @@ int main(int argc, char** argv) {
   app.add_option("--export-results", export_dir,
                  "write one compact result (<log name>.results.json) per finished log of DIR into this folder "
                  "(with --include-unfinished: every log), and no report");
+  std::string same_as;
+  app.add_option("--same-as", same_as,
+                 "compare DIR's compact results with OTHER's (a folder of compact results), and no report")
+      ->excludes("--export-results");
   app.add_option("--out,-o", o.out_dir, "output folder (default: DIR/stats)");
   app.add_flag("--include-unfinished", o.include_unfinished,
                "also use runs that did not reach their last generation (default: left out, and listed)");
@@ -77,6 +85,13 @@ int main(int argc, char** argv) {
   o.plots = !no_plots;
   o.zoo = !no_zoo;
   o.analysis.changes.simulated_only = !all_changes;
+  if (!same_as.empty()) {
+    return exit_status_of("robozoo-stats", [&] {
+      const FolderAgreement f = compare_results_folders(o.log_dir, same_as);
+      print_agreement(f, o.log_dir, same_as, std::cout);
+      return f.agree() ? 0 : 1;
+    });
+  }
   if (!export_dir.empty()) {
     return exit_status_of("robozoo-stats", [&] {
       std::vector<std::string> skipped;

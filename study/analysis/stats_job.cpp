@@ -1,6 +1,8 @@
 #include "study/analysis/stats_job.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -354,7 +356,18 @@ void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out
   }
 }
 
-/// The robozoo-stats command that makes this report again.
+/// `w` as one shell word: as it is when it needs no quoting, else in single quotes.
+std::string shell_word(const std::string& w) {
+  const bool plain = !w.empty() && std::all_of(w.begin(), w.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("/._-+,=:@%", c) != nullptr;
+  });
+  if (plain) return w;
+  std::string q = "'";
+  for (char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// The robozoo-stats command that makes this report again (its files, in the same folder).
 std::string stats_command(const StatsOptions& o, const ExperimentAnalysis& A) {
   std::string stats = "build/bin/robozoo-stats " + o.log_dir + " --compare " + A.control_arm + "," + A.experimental_arm;
   if (o.include_unfinished) stats += " --include-unfinished";
@@ -363,6 +376,12 @@ std::string stats_command(const StatsOptions& o, const ExperimentAnalysis& A) {
   if (o.analysis.changes.topology.joints) stats += " --topology-joints";
   if (!o.analysis.changes.simulated_only) stats += " --all-champion-changes";
   if (o.alpha != 0.05) stats += " --alpha " + csv_number(o.alpha);
+  // What else shapes the files: where they go, and the report's own words.
+  if (!o.out_dir.empty()) stats += " --out " + shell_word(o.out_dir);
+  if (!o.plots) stats += " --no-plots";
+  if (!o.zoo) stats += " --no-zoo";
+  if (o.title != StatsOptions{}.title) stats += " --title " + shell_word(o.title);
+  for (const auto& note : o.notes) stats += " --note " + shell_word(note);
   return stats;
 }
 

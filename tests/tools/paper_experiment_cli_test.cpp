@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -70,6 +71,24 @@ TEST(PaperExperimentCli, MilestonesKeepTheirOwnResultsAndAreNotRunTwice) {
   EXPECT_TRUE(read_file(t / "paper/m2/results/recurrent-s2.results.json") ==
               read_file(d + "/m2/results/recurrent-s2.results.json"));
   EXPECT_EQ(generations(t / "paper/m3/results/recurrent-s2.results.json"), 4u);
+  // ... and each later milestone's trials repeat the earlier one's generations.
+  EXPECT_NE(collect.output.find("M2: 2 trials in both folders agree over the generations both hold (M1's)"),
+            std::string::npos)
+      << collect.output;
+  EXPECT_NE(collect.output.find("M3: 2 trials in both folders agree over the generations both hold (M2's)"),
+            std::string::npos)
+      << collect.output;
+
+  // A collected M2 result that does not repeat M1's generation 1 is found and named.
+  nlohmann::json changed = results(d + "/m2/results/recurrent-s2.results.json");
+  changed["generations"]["mean_fitness"][1] = changed["generations"]["mean_fitness"][1].get<double>() + 1e-6;
+  std::ofstream(d + "/m2/results/recurrent-s2.results.json") << changed.dump();
+  const Outcome differ = run_shell(script(t, d, "--collect"));
+  EXPECT_EQ(differ.status, 1) << differ.output;
+  EXPECT_NE(differ.output.find("M2: its results do not repeat M1's generations"), std::string::npos) << differ.output;
+  EXPECT_NE(differ.output.find("recurrent-s2: generations 0-1 (3 and 2 held) DIFFER at generation 1: mean_fitness"),
+            std::string::npos)
+      << differ.output;
 }
 
 TEST(PaperExperimentCli, ANewMachineCountsCommittedResultsAndRepeatsTheRest) {

@@ -196,7 +196,9 @@ TEST(StatsCli, CompareAndAlphaReachTheReport) {
             std::string::npos)
       << report;
   EXPECT_NE(report.find("at α = 0.50"), std::string::npos);
-  EXPECT_NE(report.find("--compare recurrent,feedforward --alpha 0.5\n"), std::string::npos) << report;
+  // The command that ran, with the options that shape its files.
+  EXPECT_NE(report.find(" --compare recurrent,feedforward --alpha 0.5 --no-plots --no-zoo\n"), std::string::npos)
+      << report;
   const auto curve = read_csv(dir / "stats/fitness_curve.csv");
   EXPECT_EQ(curve.at("2").at("recurrent_n"), "2");
   // Feed-forward minus recurrent at generation 2.

@@ -41,20 +41,26 @@ TEST(StatsResultsCli, CompactResultsGiveTheReportOfTheLogsByteForByte) {
   for (const auto& f : results) fs::copy_file(exp + "/results/" + f, results_home / "exp/" + f);
 
   const std::string flags = " --no-zoo --note 'a note'";
-  const auto a = run_shell("cd '" + logs_home.path + "' && " + bin("robozoo-stats") + " exp --out '" + (reports / "A") +
-                           "'" + flags);
+  // Each into a folder "stats" beside its input: the report's robozoo-stats command (with --out) is the same.
+  const auto a = run_shell("cd '" + logs_home.path + "' && " + bin("robozoo-stats") + " exp --out stats" + flags);
   ASSERT_EQ(a.status, 0) << a.output;
-  const auto b = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --out '" +
-                           (reports / "B") + "'" + flags);
+  const auto b = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --out stats" + flags);
   ASSERT_EQ(b.status, 0) << b.output;
-  const auto fa = files_in(reports / "A"), fb = files_in(reports / "B");
+  const std::string A = logs_home / "stats", B = results_home / "stats";
+  const auto fa = files_in(A), fb = files_in(B);
   ASSERT_EQ(fa, fb);
   EXPECT_NE(std::find(fa.begin(), fa.end(), "report.md"), fa.end());
   EXPECT_NE(std::find(fa.begin(), fa.end(), "fig1_fitness.png"), fa.end());
   EXPECT_GE(fa.size(), 15u);
-  for (const auto& f : fa) EXPECT_EQ(read_file(reports / "A/" + f), read_file(reports / "B/" + f)) << f;
+  for (const auto& f : fa) EXPECT_EQ(read_file(A + "/" + f), read_file(B + "/" + f)) << f;
   // The report has what only the checkpoints (next to the logs) know: robozoo-evolve's time.
-  EXPECT_NE(read_file(reports / "B/report.md").find("of wall time on the 4 runs with a checkpoint"), std::string::npos);
+  EXPECT_NE(read_file(B + "/report.md").find("of wall time on the 4 runs with a checkpoint"), std::string::npos);
+  // Its reproduce command is the command that ran, options that shape the files included.
+  EXPECT_NE(
+      read_file(B + "/report.md")
+          .find("build/bin/robozoo-stats exp --compare feedforward,recurrent --out stats --no-zoo --note 'a note'"),
+      std::string::npos)
+      << read_file(B + "/report.md");
 
   // With zoo sheets asked for, a folder of compact results says why there is none.
   const auto zoo = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --no-plots --out '" +

@@ -1,0 +1,155 @@
+// The committed paper-size experiment (media/experiment/paper): every compact
+// result is a finished trial of the plan, made by the one pinned software version;
+// robozoo-stats, run as each committed report's own reproduce command says, gives
+// that report, its tables and its plot scripts byte for byte (the PNGs exist; their
+// bytes depend on gnuplot's and cairo's builds); and a later milestone's results
+// repeat the earlier milestone's generations field for field (runs are
+// deterministic, even when a trial ran again from generation 0 on another machine).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo {
+namespace {
+
+using namespace robozoo::testing;
+namespace fs = std::filesystem;
+
+const std::string kPaper = "media/experiment/paper";
+
+struct Milestone {
+  std::string folder;  ///< relative to the repository
+  int generations;     ///< the milestone's end
+};
+
+/// The milestones whose results are committed, in order.
+std::vector<Milestone> committed_milestones() {
+  std::vector<Milestone> out;
+  const std::string root = ROBOZOO_SOURCE_DIR;
+  for (const Milestone& m : {Milestone{kPaper, 30}, Milestone{kPaper + "/m2", 60}, Milestone{kPaper + "/m3", 500}})
+    if (fs::is_directory(root + "/" + m.folder + "/results")) out.push_back(m);
+  return out;
+}
+
+std::vector<std::string> result_files(const std::string& folder) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(std::string(ROBOZOO_SOURCE_DIR) + "/" + folder + "/results"))
+    out.push_back(e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(PaperResults, EveryCommittedResultIsAFinishedTrialOfThePlanMadeByThePinnedVersion) {
+  const auto milestones = committed_milestones();
+  ASSERT_FALSE(milestones.empty()) << "no " << kPaper << "/results";
+  std::string version = read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + kPaper + "/VERSION");
+  version = version.substr(0, version.find_first_of("\n "));
+  ASSERT_GE(version.size(), 12u) << "VERSION: " << version;
+  const std::map<std::string, int> arm_index = {
+      {"feedforward", 0}, {"recurrent", 1}, {"recurrent-sparse", 2}, {"recurrent-zero", 3}};
+  const std::regex name_rule("([a-z-]+)-s([0-9]+)\\.results\\.json");
+  for (const Milestone& m : milestones) {
+    std::map<std::string, int> per_arm;
+    for (const auto& f : result_files(m.folder)) {
+      SCOPED_TRACE(m.folder + "/results/" + f);
+      std::smatch match;
+      ASSERT_TRUE(std::regex_match(f, match, name_rule));
+      const std::string arm = match[1];
+      const long seed = std::stol(match[2]);
+      ASSERT_TRUE(arm_index.count(arm));
+      // Trial k of arm a has seed 4(k - 1) + a + 1 (docs/experiment.md), k from 1 to 30.
+      EXPECT_EQ((seed - 1) % 4, arm_index.at(arm));
+      EXPECT_LE((seed - 1) / 4 + 1, 30);
+      ++per_arm[arm];
+      const nlohmann::json j = nlohmann::json::parse(read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + m.folder +
+                                                               "/results/" + f));
+      const nlohmann::json& run = j.at("run");
+      EXPECT_EQ(run.at("software_version").get<std::string>(), version.substr(0, 12));
+      EXPECT_EQ(run.at("arm").get<std::string>(), arm);
+      EXPECT_EQ(run.at("seed").get<long>(), seed);
+      EXPECT_EQ(run.at("population").get<int>(), 150);
+      EXPECT_EQ(run.at("steps").get<int>(), 2500);
+      EXPECT_EQ(run.at("generations").get<int>(), m.generations);
+      EXPECT_EQ(j.at("generations").at("generation").size(), static_cast<size_t>(m.generations));  // finished
+      EXPECT_FALSE(j.at("truncated").get<bool>());
+      EXPECT_EQ(j.at("undecodable").get<int>(), 0);
+    }
+    for (const auto& [arm, n] : per_arm) EXPECT_LE(n, 30) << m.folder << " " << arm;
+    if (m.folder != kPaper) {  // later milestones extend feedforward and recurrent only
+      EXPECT_EQ(per_arm.count("recurrent-sparse") + per_arm.count("recurrent-zero"), 0u) << m.folder;
+    }
+  }
+}
+
+/// The robozoo-stats command of a committed report's Reproduce section ("" when none).
+std::string stats_command_of(const std::string& report) {
+  std::istringstream in(report);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("build/bin/robozoo-stats ", 0) == 0) return line;
+  return "";
+}
+
+TEST(PaperResults, RobozooStatsReproducesEachCommittedReportByteForByte) {
+  for (const Milestone& m : committed_milestones()) {
+    SCOPED_TRACE(m.folder);
+    const std::string committed = std::string(ROBOZOO_SOURCE_DIR) + "/" + m.folder;
+    // A copy of the committed results at the same relative path, so that the command runs as it ran.
+    TempDir t;
+    fs::create_directories(t / (m.folder + "/results"));
+    for (const auto& f : result_files(m.folder))
+      fs::copy_file(committed + "/results/" + f, t / (m.folder + "/results/" + f));
+    const bool has_report = fs::exists(committed + "/report.md");
+    std::string command = has_report ? stats_command_of(read_file(committed + "/report.md"))
+                                     : "build/bin/robozoo-stats " + m.folder + "/results --out " + m.folder;
+    ASSERT_FALSE(command.empty()) << "the committed report names no robozoo-stats command";
+    // The report's command writes into the milestone's folder (the committed files' place).
+    ASSERT_NE(command.find(" --out " + m.folder), std::string::npos) << command;
+    command.replace(0, std::string("build/bin/robozoo-stats").size(), bin("robozoo-stats"));
+    const Outcome run = run_shell("cd '" + t.path + "' && " + command);
+    ASSERT_EQ(run.status, 0) << command << "\n" << run.output;
+    const std::string made = t / m.folder;
+    ASSERT_TRUE(fs::exists(made + "/report.md"));
+    if (!has_report) {
+      // No report yet (the milestone is running): the command that will make it works on what is there.
+      EXPECT_NE(read_file(made + "/report.md").find(m.folder + "/results"), std::string::npos);
+      continue;
+    }
+    size_t compared = 0;
+    for (const auto& e : fs::directory_iterator(made)) {
+      if (!e.is_regular_file()) continue;
+      const std::string name = e.path().filename().string();
+      SCOPED_TRACE(name);
+      ASSERT_TRUE(fs::exists(committed + "/" + name)) << "made but not committed";
+      if (e.path().extension() == ".png") continue;
+      EXPECT_EQ(read_file(made + "/" + name), read_file(committed + "/" + name));
+      ++compared;
+    }
+    EXPECT_GE(compared, 10u);
+  }
+}
+
+TEST(PaperResults, LaterMilestonesRepeatTheEarlierMilestonesGenerations) {
+  const auto milestones = committed_milestones();
+  for (size_t k = 1; k < milestones.size(); ++k) {
+    const std::string later = milestones[k].folder + "/results", earlier = milestones[k - 1].folder + "/results";
+    const Outcome same =
+        run_shell("cd '" + std::string(ROBOZOO_SOURCE_DIR) + "' && " + bin("robozoo-stats") + " " + later +
+                  " --same-as " + earlier);
+    EXPECT_EQ(same.status, 0) << same.output;
+    EXPECT_NE(same.output.find("trials in both folders agree over the generations both hold"), std::string::npos)
+        << same.output;
+  }
+}
+
+}  // namespace
+}  // namespace robozoo
