@@ -5,7 +5,7 @@
 // and started again at any time: finished trials are skipped, a stopped one is
 // resumed from its checkpoint, the others are started; --generations above the
 // trials' own extends them from their checkpoints. Each finished trial leaves its
-// compact result (study/analysis/run_results.hpp) in --results. Prints progress
+// compact result (study/analysis/read/run_results.hpp) in --results. Prints progress
 // across the whole experiment with an estimated finish time. Then: robozoo-stats DIR.
 #include <unistd.h>
 
@@ -23,7 +23,7 @@
 #include "evolve/config/run_config.hpp"
 #include "evolve/core/version.hpp"
 #include "evolve/run/checkpoint.hpp"
-#include "study/analysis/run_results.hpp"
+#include "study/analysis/read/run_results.hpp"
 #include "study/experiment/child_process.hpp"
 #include "study/experiment/progress_estimate.hpp"
 #include "study/experiment/trial_plan.hpp"

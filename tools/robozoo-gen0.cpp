@@ -10,7 +10,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "study/analysis/initial_robots.hpp"
+#include "study/analysis/measure/initial_robots.hpp"
 #include "evolve/core/version.hpp"
 #include "study/experiment/trial_plan.hpp"
 

@@ -10,7 +10,7 @@
 
 #include <iostream>
 
-#include "study/analysis/results_agreement.hpp"
+#include "study/analysis/read/results_agreement.hpp"
 #include "study/analysis/stats_job.hpp"
 #include "evolve/core/version.hpp"
 #include "util/exit_status.hpp"

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "study/analysis/nan.hpp"
-#include "study/analysis/ttest.hpp"
+#include "study/analysis/compare/nan.hpp"
+#include "study/analysis/compare/ttest.hpp"
 #include "study/experiment/trial_plan.hpp"
 #include "evolve/messages/build.hpp"
 #include "robozoo/generation_t.hpp"

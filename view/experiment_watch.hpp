@@ -9,7 +9,7 @@
 // generation and its state; each arm's mean best-so-far per generation with
 // its standard error (sample s.d. / sqrt(n), over the trials that reached that
 // generation); and, for every pair of arms, Student's two-sided t-test per
-// generation (study/analysis/ttest: what robozoo-stats uses), p < alpha marked.
+// generation (study/analysis/compare/ttest: what robozoo-stats uses), p < alpha marked.
 #include <cstdint>
 #include <filesystem>
 #include <map>

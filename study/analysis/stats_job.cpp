@@ -10,12 +10,12 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "study/analysis/csv_writer.hpp"
-#include "study/analysis/experiment_tables.hpp"
-#include "study/analysis/gnuplot_runner.hpp"
-#include "study/analysis/plot_scripts.hpp"
-#include "study/analysis/report.hpp"
-#include "study/analysis/reproduce_commands.hpp"
+#include "study/analysis/figures/csv_writer.hpp"
+#include "study/analysis/figures/experiment_tables.hpp"
+#include "study/analysis/figures/gnuplot_runner.hpp"
+#include "study/analysis/figures/plot_scripts.hpp"
+#include "study/analysis/report/report.hpp"
+#include "study/analysis/report/reproduce_commands.hpp"
 #include "util/run_program.hpp"
 #include "study/experiment/progress_estimate.hpp"
 #include "util/program_path.hpp"

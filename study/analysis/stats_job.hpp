@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "study/analysis/experiment_analysis.hpp"
-#include "study/analysis/run_analysis.hpp"
-#include "study/analysis/run_results.hpp"
+#include "study/analysis/compare/experiment_analysis.hpp"
+#include "study/analysis/measure/run_analysis.hpp"
+#include "study/analysis/read/run_results.hpp"
 
 namespace robozoo {
 

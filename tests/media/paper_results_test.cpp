@@ -70,8 +70,8 @@ TEST(PaperResults, EveryCommittedResultIsAFinishedTrialOfThePlanMadeByThePinnedV
       EXPECT_EQ((seed - 1) % 4, arm_index.at(arm));
       EXPECT_LE((seed - 1) / 4 + 1, 30);
       ++per_arm[arm];
-      const nlohmann::json j = nlohmann::json::parse(read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + m.folder +
-                                                               "/results/" + f));
+      const nlohmann::json j =
+          nlohmann::json::parse(read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + m.folder + "/results/" + f));
       const nlohmann::json& run = j.at("run");
       EXPECT_EQ(run.at("software_version").get<std::string>(), version.substr(0, 12));
       EXPECT_EQ(run.at("arm").get<std::string>(), arm);
@@ -142,9 +142,8 @@ TEST(PaperResults, LaterMilestonesRepeatTheEarlierMilestonesGenerations) {
   const auto milestones = committed_milestones();
   for (size_t k = 1; k < milestones.size(); ++k) {
     const std::string later = milestones[k].folder + "/results", earlier = milestones[k - 1].folder + "/results";
-    const Outcome same =
-        run_shell("cd '" + std::string(ROBOZOO_SOURCE_DIR) + "' && " + bin("robozoo-stats") + " " + later +
-                  " --same-as " + earlier);
+    const Outcome same = run_shell("cd '" + std::string(ROBOZOO_SOURCE_DIR) + "' && " + bin("robozoo-stats") + " " +
+                                   later + " --same-as " + earlier);
     EXPECT_EQ(same.status, 0) << same.output;
     EXPECT_NE(same.output.find("trials in both folders agree over the generations both hold"), std::string::npos)
         << same.output;

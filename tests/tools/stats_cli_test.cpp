@@ -10,7 +10,7 @@
 #include <map>
 #include <sstream>
 
-#include "study/analysis/ttest.hpp"
+#include "study/analysis/compare/ttest.hpp"
 #include "tests/study/analysis/hand_made_experiment.hpp"
 #include "tests/support/subprocess.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <fstream>
 
-#include "study/analysis/run_results.hpp"
+#include "study/analysis/read/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
