@@ -11,7 +11,7 @@
 #include "evolve/sim/simulation.hpp"
 #include "replay/morphology_compare.hpp"
 #include "replay/pose_compare.hpp"
-#include "runlog/regrow.hpp"
+#include "runlog/robots/regrow.hpp"
 
 namespace robozoo::replay {
 

@@ -8,7 +8,7 @@
 
 #include "evolve/config/run_config.hpp"
 #include "evolve/io/event_log.hpp"
-#include "runlog/log_index.hpp"
+#include "runlog/read/log_index.hpp"
 #include "replay/recompute_cache.hpp"
 #include "replay/value_compare.hpp"
 

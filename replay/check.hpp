@@ -7,7 +7,7 @@
 #include <string>
 
 #include "replay/check_report.hpp"
-#include "runlog/log_reader.hpp"
+#include "runlog/read/log_reader.hpp"
 
 namespace robozoo::replay {
 

@@ -9,7 +9,7 @@
 
 #include "replay/champion_check.hpp"
 #include "replay/log_structure.hpp"
-#include "runlog/log_index.hpp"
+#include "runlog/read/log_index.hpp"
 
 namespace robozoo::replay {
 

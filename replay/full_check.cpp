@@ -16,8 +16,8 @@
 #include "evolve/run/checkpoint.hpp"
 #include "replay/logged_config.hpp"
 #include "replay/message_diff.hpp"
-#include "runlog/log_index.hpp"
-#include "runlog/log_reader.hpp"
+#include "runlog/read/log_index.hpp"
+#include "runlog/read/log_reader.hpp"
 
 namespace robozoo::replay {
 

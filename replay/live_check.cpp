@@ -20,8 +20,8 @@
 #include "replay/logged_config.hpp"
 #include "replay/number_text.hpp"
 #include "replay/recompute_cache.hpp"
-#include "runlog/log_index.hpp"
-#include "runlog/regrow.hpp"
+#include "runlog/read/log_index.hpp"
+#include "runlog/robots/regrow.hpp"
 
 namespace robozoo::replay {
 

@@ -8,7 +8,7 @@
 #include "evolve/sim/simulation.hpp"
 #include "evolve/sim/trajectory_sampler.hpp"
 #include "replay/logged_config.hpp"
-#include "runlog/regrow.hpp"
+#include "runlog/robots/regrow.hpp"
 
 namespace robozoo::replay {
 

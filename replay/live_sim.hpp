@@ -11,8 +11,8 @@
 #include <string>
 
 #include "evolve/io/event_log.hpp"
-#include "runlog/log_index.hpp"
-#include "runlog/play_clock.hpp"
+#include "runlog/read/log_index.hpp"
+#include "runlog/play/play_clock.hpp"
 
 namespace robozoo::replay {
 

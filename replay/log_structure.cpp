@@ -10,7 +10,7 @@
 #include "evolve/sim/outcome.hpp"
 #include "replay/number_text.hpp"
 #include "replay/value_compare.hpp"
-#include "runlog/regrow.hpp"
+#include "runlog/robots/regrow.hpp"
 
 namespace robozoo::replay {
 

@@ -30,7 +30,7 @@
 #include "evolve/config/run_config.hpp"
 #include "evolve/io/event_log.hpp"
 #include "replay/champion_check.hpp"
-#include "runlog/log_index.hpp"
+#include "runlog/read/log_index.hpp"
 
 namespace robozoo::replay {
 

@@ -22,7 +22,7 @@
 #include "evolve/config/run_config.hpp"
 #include "util/stop_signals.hpp"
 #include "replay/live_sim.hpp"
-#include "runlog/player.hpp"
+#include "runlog/play/player.hpp"
 #include "evolve/core/version.hpp"
 #include "runlog/progress_bar.hpp"
 #include "util/exit_status.hpp"

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "runlog/message_json.hpp"
+#include "runlog/text/message_json.hpp"
 
 namespace robozoo::replay {
 

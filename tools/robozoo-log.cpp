@@ -19,13 +19,13 @@
 #include "util/run_program.hpp"
 #include "evolve/core/version.hpp"
 #include "evolve/io/log_compare.hpp"
-#include "runlog/cppn_dot.hpp"
-#include "runlog/log_cat.hpp"
-#include "runlog/log_reader.hpp"
-#include "runlog/log_stream.hpp"
-#include "runlog/log_summary.hpp"
-#include "runlog/logged_genome.hpp"
-#include "runlog/mcap_export.hpp"
+#include "runlog/text/cppn_dot.hpp"
+#include "runlog/text/log_cat.hpp"
+#include "runlog/read/log_reader.hpp"
+#include "runlog/read/log_stream.hpp"
+#include "runlog/text/log_summary.hpp"
+#include "runlog/text/logged_genome.hpp"
+#include "runlog/export/mcap_export.hpp"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "evolve/messages/build.hpp"
 #include "robozoo/generation_t.hpp"
 #include "robozoo/run_t.hpp"
-#include "runlog/log_reader.hpp"
+#include "runlog/read/log_reader.hpp"
 
 namespace robozoo::view {
 

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "runlog/log_source.hpp"
-#include "runlog/selection.hpp"
-#include "runlog/trajectory.hpp"
+#include "runlog/read/log_source.hpp"
+#include "runlog/robots/selection.hpp"
+#include "runlog/robots/trajectory.hpp"
 #include "view/frames.hpp"
 
 namespace robozoo::view {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "evolve/core/version.hpp"
-#include "runlog/leaf_spheres.hpp"
+#include "runlog/robots/leaf_spheres.hpp"
 
 namespace robozoo::view {
 

@@ -29,7 +29,7 @@
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
 #include "robozoo/run_t.hpp"
-#include "runlog/trajectory.hpp"
+#include "runlog/robots/trajectory.hpp"
 
 namespace robozoo::view {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "runlog/player.hpp"
-#include "runlog/log_index.hpp"
-#include "runlog/log_reader.hpp"
+#include "runlog/play/player.hpp"
+#include "runlog/read/log_index.hpp"
+#include "runlog/read/log_reader.hpp"
 
 namespace robozoo::view {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "runlog/selection.hpp"
-#include "runlog/trajectory.hpp"
+#include "runlog/robots/selection.hpp"
+#include "runlog/robots/trajectory.hpp"
 
 namespace robozoo::view {
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "runlog/message_collector.hpp"
+#include "runlog/read/message_collector.hpp"
 #include "view/client_queue.hpp"
 
 namespace robozoo::view {

@@ -8,9 +8,9 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "evolve/io/bus.hpp"
-#include "runlog/message_collector.hpp"
+#include "runlog/read/message_collector.hpp"
 #include "render/video/render_worker.hpp"
-#include "runlog/trajectory.hpp"
+#include "runlog/robots/trajectory.hpp"
 #include "render/video/video_subject.hpp"
 
 namespace robozoo::render {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/scene/robot_shape.hpp"
-#include "runlog/run_record.hpp"
+#include "runlog/read/run_record.hpp"
 
 namespace robozoo::render {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "runlog/message_collector.hpp"
+#include "runlog/read/message_collector.hpp"
 
 namespace robozoo::render {
 

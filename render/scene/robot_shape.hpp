@@ -10,7 +10,7 @@
 #include "render/scene/scene.hpp"
 #include "robozoo/morphology_t.hpp"
 #include "robozoo/pose_t.hpp"
-#include "runlog/leaf_spheres.hpp"
+#include "runlog/robots/leaf_spheres.hpp"
 
 namespace robozoo::render {
 

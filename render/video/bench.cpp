@@ -9,8 +9,8 @@
 #include <unistd.h>
 
 #include "evolve/core/wall_time.hpp"
-#include "runlog/log_source.hpp"
-#include "runlog/selection.hpp"
+#include "runlog/read/log_source.hpp"
+#include "runlog/robots/selection.hpp"
 #include "render/video/video_quality.hpp"
 #include "render/video/video_subject.hpp"
 

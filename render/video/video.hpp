@@ -13,7 +13,7 @@
 #include "render/scene/robot_card.hpp"
 #include "render/scene/stage.hpp"
 #include "render/gl/text.hpp"
-#include "runlog/trajectory.hpp"
+#include "runlog/robots/trajectory.hpp"
 #include "render/video/video_encoder.hpp"
 
 namespace robozoo::render {

@@ -1,7 +1,7 @@
 #include "render/video/video_subject.hpp"
 
 #include "render/scene/robot_card.hpp"
-#include "runlog/trajectory.hpp"
+#include "runlog/robots/trajectory.hpp"
 
 namespace robozoo::render {
 

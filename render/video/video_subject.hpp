@@ -1,7 +1,7 @@
 #pragma once
 // Choosing what a behaviour video shows: the robot, its trajectory and the
 // target, from what a log or the bus delivered.
-#include "runlog/run_record.hpp"
+#include "runlog/read/run_record.hpp"
 #include "render/video/video.hpp"
 
 namespace robozoo::render {

@@ -11,7 +11,7 @@
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
 #include "render/gl/image.hpp"
-#include "runlog/run_record.hpp"
+#include "runlog/read/run_record.hpp"
 #include "tests/support/small_run.hpp"
 
 namespace robozoo::render::testing {

@@ -3,7 +3,7 @@
 // and it records every time it was asked to wait until.
 #include <vector>
 
-#include "runlog/play_clock.hpp"
+#include "runlog/play/play_clock.hpp"
 
 namespace robozoo::testing {
 

@@ -22,8 +22,8 @@
 
 #include "evolve/io/event_log.hpp"
 #include "render/gl/png_io.hpp"
-#include "runlog/log_source.hpp"
-#include "runlog/trajectory.hpp"
+#include "runlog/read/log_source.hpp"
+#include "runlog/robots/trajectory.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/browser.hpp"

@@ -8,7 +8,7 @@
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/run/trajectory.hpp"
-#include "runlog/regrow.hpp"
+#include "runlog/robots/regrow.hpp"
 
 namespace robozoo {
 

@@ -9,7 +9,7 @@
 #include "study/experiment/trial_plan.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
-#include "runlog/log_reader.hpp"
+#include "runlog/read/log_reader.hpp"
 
 namespace robozoo {
 

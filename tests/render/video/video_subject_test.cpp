@@ -3,8 +3,8 @@
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>
 
-#include "runlog/log_source.hpp"
-#include "runlog/selection.hpp"
+#include "runlog/read/log_source.hpp"
+#include "runlog/robots/selection.hpp"
 #include "tests/render/fixtures.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"

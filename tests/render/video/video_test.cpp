@@ -6,8 +6,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "runlog/log_source.hpp"
-#include "runlog/selection.hpp"
+#include "runlog/read/log_source.hpp"
+#include "runlog/robots/selection.hpp"
 #include "render/video/video_subject.hpp"
 #include "tests/render/decode_video.hpp"
 #include "tests/render/fixtures.hpp"

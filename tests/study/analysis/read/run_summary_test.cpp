@@ -5,7 +5,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "runlog/log_reader.hpp"
+#include "runlog/read/log_reader.hpp"
 #include "tests/study/analysis/hand_made_log.hpp"
 #include "tests/support/subprocess.hpp"
 
