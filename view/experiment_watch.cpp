@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <regex>
 #include <set>
 #include <stdexcept>
@@ -15,6 +16,7 @@
 #include "robozoo/generation_t.hpp"
 #include "robozoo/run_t.hpp"
 #include "runlog/read/log_reader.hpp"
+#include "study/analysis/read/run_results.hpp"
 
 namespace robozoo::view {
 
@@ -91,9 +93,11 @@ ExperimentWatch::ExperimentWatch(std::string dir, ExperimentWatchOptions options
   if (!fs::is_directory(dir_, ec)) throw std::runtime_error(dir_ + ": not a folder");
   poll();
   if (trials_.empty())
-    throw std::runtime_error(dir_ +
-                             ": no experiment here (no trial log <arm>-s<seed>.lcmlog, as robozoo-experiment "
-                             "writes)");
+    throw std::runtime_error(
+        dir_ +
+        ": no experiment here (no trial log <arm>-s<seed>.lcmlog, as robozoo-experiment "
+        "writes" +
+        (options_.results_dirs.empty() ? std::string(")") : std::string(", nor a compact result in --results)")));
 }
 
 bool ExperimentWatch::poll() {
@@ -117,7 +121,7 @@ bool ExperimentWatch::poll() {
       }
       const std::string name = file.substr(0, file.size() - 7);
       auto it = trials_.find(name);
-      if (it == trials_.end()) {
+      if (it == trials_.end() || !it->second.results_path.empty()) {  // new, or known from a result until now
         TrialProgress t;
         t.name = name;
         t.arm = m[1].str();
@@ -137,9 +141,88 @@ bool ExperimentWatch::poll() {
     changed |= t.best_so_far != before.best_so_far || t.state != before.state || t.planned != before.planned ||
                t.checkpoint != before.checkpoint || before.state.empty();
   }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (TrialProgress& t : work) trials_[t.name] = std::move(t);
+  }
+  changed |= poll_results();
   std::lock_guard<std::mutex> lock(mutex_);
-  for (TrialProgress& t : work) trials_[t.name] = std::move(t);
   if (changed || summary_.empty()) summary_ = summary_json_locked().dump();
+  return changed;
+}
+
+bool ExperimentWatch::poll_results() {
+  static const std::regex name_re(R"(([a-z-]+)-s([0-9]{1,18})\.results\.json)");
+  // The result files, by trial; of two files of one trial, the one with more generations is shown.
+  std::map<std::string, std::vector<fs::path>> files;
+  for (const std::string& d : options_.results_dirs) {
+    std::error_code ec;
+    for (fs::directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec)) {
+      std::smatch m;
+      const std::string file = it->path().filename().string();
+      if (!it->is_regular_file(ec) || !std::regex_match(file, m, name_re)) continue;
+      try {
+        arm_from_name(m[1].str());
+      } catch (const std::invalid_argument&) {
+        continue;
+      }
+      files[file.substr(0, file.size() - std::string(kRunResultsExtension).size())].push_back(it->path());
+    }
+  }
+  bool changed = false;
+  for (const auto& [name, paths] : files) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      const auto it = trials_.find(name);
+      if (it != trials_.end() && it->second.results_path.empty()) continue;  // its log is here
+    }
+    std::string stamp;
+    for (const fs::path& p : paths) {
+      std::error_code ec;
+      stamp += p.string() + ":" + std::to_string(fs::file_size(p, ec)) + ":" +
+               std::to_string(fs::last_write_time(p, ec).time_since_epoch().count()) + ";";
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      const auto it = trials_.find(name);
+      if (it != trials_.end() && it->second.results_stamp == stamp) continue;  // read, and unchanged
+    }
+    std::optional<TrialProgress> best;
+    for (const fs::path& p : paths) {
+      RunResults r;
+      try {
+        r = read_run_results(p.string());
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        changed |= unreadable_.emplace(p.string(), e.what()).second;
+        continue;
+      }
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        changed |= unreadable_.erase(p.string()) > 0;
+      }
+      TrialProgress t;
+      t.name = name;
+      t.arm = r.run.arm;
+      t.seed = r.run.seed;
+      t.planned = r.run.generations_requested;
+      for (const GenerationRecord& g : r.run.generations) {
+        if (g.generation < 0) continue;
+        const size_t at = static_cast<size_t>(g.generation);
+        if (t.best_so_far.size() <= at) t.best_so_far.resize(at + 1, kNaN);
+        t.best_so_far[at] = g.best_so_far_fitness;
+      }
+      const int32_t done = static_cast<int32_t>(t.best_so_far.size());
+      t.state = t.planned > 0 && done >= t.planned ? "finished" : "stopped";
+      t.results_path = p.string();
+      t.results_stamp = stamp;
+      if (!best || t.best_so_far.size() > best->best_so_far.size()) best = std::move(t);
+    }
+    if (!best) continue;
+    std::lock_guard<std::mutex> lock(mutex_);
+    trials_[name] = std::move(*best);
+    changed = true;
+  }
   return changed;
 }
 
@@ -186,6 +269,7 @@ nlohmann::json ExperimentWatch::summary_json_locked() const {
                       {"planned", t.planned},
                       {"best", best},
                       {"checkpoint", t.checkpoint},
+                      {"source", t.results_path.empty() ? "log" : "result"},
                       {"bsf", t.best_so_far}});
   }
   nlohmann::json arms = nlohmann::json::array();
@@ -200,8 +284,17 @@ nlohmann::json ExperimentWatch::summary_json_locked() const {
         if (p[g] < options_.alpha) sig.push_back(g);
       tests.push_back({{"a", curves[i].arm}, {"b", curves[j].arm}, {"p", p}, {"significant", sig}});
     }
-  return {{"t", "experiment"}, {"dir", dir_},  {"alpha", options_.alpha}, {"test", "Student's t-test, two-sided"},
-          {"trials", trials},  {"arms", arms}, {"tests", tests}};
+  nlohmann::json unreadable = nlohmann::json::array();
+  for (const auto& [file, why] : unreadable_) unreadable.push_back(why);
+  return {{"t", "experiment"},
+          {"dir", dir_},
+          {"results_dirs", options_.results_dirs},
+          {"alpha", options_.alpha},
+          {"test", "Student's t-test, two-sided"},
+          {"trials", trials},
+          {"arms", arms},
+          {"tests", tests},
+          {"unreadable_results", unreadable}};
 }
 
 std::string ExperimentWatch::summary() const {
@@ -220,6 +313,12 @@ std::string ExperimentWatch::log_of(const std::string& name) const {
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = trials_.find(name);
   return it == trials_.end() ? "" : it->second.log_path;
+}
+
+std::string ExperimentWatch::results_of(const std::string& name) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = trials_.find(name);
+  return it == trials_.end() ? "" : it->second.results_path;
 }
 
 }  // namespace robozoo::view

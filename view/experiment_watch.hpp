@@ -5,6 +5,13 @@
 // the last one (runlog's scan_event_log_from) and takes its ROBOZOO_RUN and
 // ROBOZOO_GENERATION messages; the rest of the log is not decoded.
 //
+// Trials finished elsewhere (another machine, a committed milestone) are known
+// only from their compact results (<arm>-s<seed>.results.json, study's
+// run_results): the folders in `results_dirs` are polled too, and a trial
+// found there without a log in DIR is shown from its result, finished (a file
+// is read again only when its size or time changes; one that does not read is
+// listed, not shown). A trial with a log is shown from its log.
+//
 // What the page gets (summary_json): every trial's best-so-far fitness per
 // generation and its state; each arm's mean best-so-far per generation with
 // its standard error (sample s.d. / sqrt(n), over the trials that reached that
@@ -24,6 +31,8 @@ namespace robozoo::view {
 struct ExperimentWatchOptions {
   double running_seconds = 60.0;  ///< a trial whose log or checkpoint changed this recently is running (s)
   double alpha = 0.05;            ///< significance level of the per-generation t-tests
+  /// Folders of compact results (*.results.json) whose trials count too where DIR has no log of them.
+  std::vector<std::string> results_dirs;
 };
 
 /// One trial as read so far.
@@ -37,6 +46,8 @@ struct TrialProgress {
   std::string state;                ///< "running", "finished" or "stopped"
   bool checkpoint = false;          ///< <log>.checkpoint exists (a stopped trial can be resumed)
   int64_t offset = 0;               ///< bytes of the log read (up to the end of its last complete event)
+  std::string results_path;         ///< its compact result, when it is known from one alone (no log)
+  std::string results_stamp;        ///< size and time of that file when it was read
 };
 
 /// An arm's curve: per generation, over the trials that reached it.
@@ -69,15 +80,20 @@ class ExperimentWatch {
   std::vector<TrialProgress> trials() const;
   /// The log of the trial called `name`, or "" when there is none.
   std::string log_of(const std::string& name) const;
+  /// The compact result of the trial called `name` when it is known from that alone, else "".
+  std::string results_of(const std::string& name) const;
 
  private:
   void read_trial(TrialProgress& t);
+  /// Trials of the results folders without a log here; true when anything changed.
+  bool poll_results();
   nlohmann::json summary_json_locked() const;
 
   std::string dir_;
   ExperimentWatchOptions options_;
   mutable std::mutex mutex_;
-  std::map<std::string, TrialProgress> trials_;  ///< by name
+  std::map<std::string, TrialProgress> trials_;    ///< by name
+  std::map<std::string, std::string> unreadable_;  ///< result file -> why it was not shown
   std::string summary_;
 };
 

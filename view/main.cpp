@@ -4,7 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <thread>
 #include <iostream>
@@ -15,6 +17,8 @@
 #include "view/assets.hpp"
 #include "view/bus_feed.hpp"
 #include "view/experiment_watch.hpp"
+#include "view/trial_page.hpp"
+#include "util/exit_status.hpp"
 #include "view/export.hpp"
 #include "view/log_feed.hpp"
 #include "view/server.hpp"
@@ -101,8 +105,8 @@ int run(CLI::App& app, Args& a) {
     }
     return run_experiment(a);
   }
-  if (app.count("--poll") || app.count("--running-seconds")) {
-    std::cerr << "robozoo-view: --poll and --running-seconds are for --experiment\n";
+  if (app.count("--poll") || app.count("--running-seconds") || app.count("--results")) {
+    std::cerr << "robozoo-view: --poll, --running-seconds and --results are for --experiment\n";
     return 2;
   }
   if (live == !a.log.path.empty()) {
@@ -152,29 +156,27 @@ int run(CLI::App& app, Args& a) {
 }
 
 /// --experiment: /experiment.json (the summary) and /trial?name=T (that
-/// trial's newest champion as a one-file replay, shown in the browser).
+/// trial's champion as a one-file replay, shown in the browser: trial_page).
 Route experiment_route(const ExperimentWatch& watch, const AssetDirs& dirs) {
   return [&watch, dirs](const std::string& target) -> std::optional<HttpReply> {
     if (target == "/experiment.json") return HttpReply{200, "application/json", watch.summary(), ""};
     static const std::regex re(R"(/trial\?name=([a-z-]+-s[0-9]{1,18}))");
     std::smatch m;
     if (!std::regex_match(target, m, re)) return std::nullopt;
-    const std::string log = watch.log_of(m[1].str());
-    if (log.empty()) return HttpReply{404, "text/plain; charset=utf-8", "no trial " + m[1].str() + "\n", ""};
-    ExportOptions o;
-    o.log = log;
-    o.allow_truncated = true;  // it may be growing
-    try {
-      return HttpReply{200, "text/html; charset=utf-8", offline_page(dirs, champion_frames(o)), ""};
-    } catch (const std::exception& e) {
-      return HttpReply{404, "text/plain; charset=utf-8", std::string(e.what()) + "\n", ""};
-    }
+    return trial_page(watch, dirs, m[1].str());
   };
 }
 
 /// robozoo-view --experiment DIR: the experiment page, the folder polled.
 int run_experiment(Args& a) {
   if (!(a.poll_seconds > 0)) throw std::invalid_argument("--poll must be a positive number of seconds");
+  for (const std::string& d : a.watch.results_dirs)
+    if (!std::filesystem::is_directory(d)) throw std::invalid_argument("--results " + d + ": not a folder");
+  // robozoo-experiment's own results folder (OUT/results) counts by default.
+  const std::string own = (std::filesystem::path(a.experiment) / "results").string();
+  if (std::filesystem::is_directory(own) &&
+      std::find(a.watch.results_dirs.begin(), a.watch.results_dirs.end(), own) == a.watch.results_dirs.end())
+    a.watch.results_dirs.push_back(own);
   fill_dirs(a.dirs);
   const std::function<bool()> should_stop = poll_interrupts();
   ExperimentWatch watch(a.experiment, a.watch);  // throws when there is no experiment
@@ -183,8 +185,12 @@ int run_experiment(Args& a) {
   a.server.route = experiment_route(watch, a.dirs);
   Server server(a.server, assets, state);
   server.start();
+  size_t from_results = 0;
+  for (const TrialProgress& t : watch.trials()) from_results += t.results_path.empty() ? 0 : 1;
   std::cerr << "robozoo-view: open " << address_text(a.server.bind, server.port()) << "experiment.html ("
-            << watch.trials().size() << " trials in " << a.experiment << ")" << std::endl;
+            << watch.trials().size() << " trials in " << a.experiment;
+  if (from_results > 0) std::cerr << ", " << from_results << " of them known from compact results alone";
+  std::cerr << ")" << std::endl;
   auto next = std::chrono::steady_clock::now();
   while (!should_stop()) {
     if (std::chrono::steady_clock::now() >= next) {
@@ -205,7 +211,8 @@ int main(int argc, char** argv) {
       "robozoo-view: watch a robozoo run in the browser, live from the bus or played from a log.\n"
       "  robozoo-view --lcm-url [URL]                 follow a live run (robozoo-evolve --lcm-url)\n"
       "  robozoo-view LOG [--speed S] [--loop | --follow] [--generation G]   play a log\n"
-      "  robozoo-view --experiment DIR                an experiment's trials as they run\n"
+      "  robozoo-view --experiment DIR [--results R]  an experiment's trials as they run (and those of R's\n"
+      "                                               compact results, finished elsewhere)\n"
       "  robozoo-view export LOG [--genome N] -o champion.html   one champion as one offline HTML file\n"
       "then open the address it prints (http://127.0.0.1:8080/ by default)."};
   app.set_version_flag("--version", robozoo::version_line());
@@ -246,6 +253,9 @@ int main(int argc, char** argv) {
   app.add_option("--experiment", a.experiment,
                  "follow an experiment folder (robozoo-experiment --out): every "
                  "trial's fitness, the arms' means and their differences");
+  app.add_option("--results", a.watch.results_dirs,
+                 "--experiment: also the trials of this folder of compact results (*.results.json) that DIR has "
+                 "no log of, e.g. finished on another machine (repeatable; DIR/results counts by default)");
   app.add_option("--poll", a.poll_seconds, "--experiment: look at the folder this often (s)")->capture_default_str();
   app.add_option("--running-seconds", a.watch.running_seconds,
                  "--experiment: a trial whose log changed this recently is running (s)")
@@ -262,11 +272,6 @@ int main(int argc, char** argv) {
   exp->add_option("--three-dir", a.dirs.three, "three.js's folder");
   app.require_subcommand(0, 1);
   CLI11_PARSE(app, argc, argv);
-  try {
-    if (exp->parsed()) return run_export(*exp, a);
-    return run(app, a);
-  } catch (const std::exception& e) {
-    std::cerr << "robozoo-view: " << e.what() << "\n";
-    return 1;
-  }
+  // Bad input or options (std::invalid_argument) exit 2, any other failure 1.
+  return exit_status_of("robozoo-view", [&] { return exp->parsed() ? run_export(*exp, a) : run(app, a); });
 }

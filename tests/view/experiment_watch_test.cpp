@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "evolve/io/event_log.hpp"
+#include "study/analysis/read/run_results.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"
 #include "view/experiment_watch.hpp"
@@ -41,6 +42,31 @@ std::string bytes_of(const std::string& path) {
 
 void put(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+/// A compact result of a recurrent trial with these best-so-far values, started for `planned` generations.
+void write_result(const std::string& path, int64_t seed, const std::vector<double>& bsf, int planned = 2) {
+  RunResults r;
+  RunSummary& s = r.run;
+  s.path = "recurrent-s" + std::to_string(seed) + ".lcmlog";
+  s.run_id = "recurrent-s" + std::to_string(seed);
+  s.software_version = "0123456789ab";
+  s.seed = seed;
+  s.regime = 1;
+  s.arm = "recurrent";
+  s.population = 10;
+  s.generations_requested = planned;
+  s.steps = 100;
+  s.dt = 0.01;
+  s.config_json = "{}";
+  for (size_t g = 0; g < bsf.size(); ++g) {
+    GenerationRecord rec;
+    rec.generation = static_cast<int32_t>(g);
+    rec.best_fitness = rec.best_so_far_fitness = bsf[g];
+    rec.evaluations = 10 * static_cast<int64_t>(g + 1);
+    s.generations.push_back(rec);
+  }
+  write_run_results(path, r);
 }
 
 TrialProgress trial(const std::string& arm, std::vector<double> bsf) {
@@ -142,6 +168,70 @@ TEST(ExperimentWatch, ReadsTheFolderAndFollowsGrowingLogs) {
   EXPECT_EQ(s["trials"][2]["name"], "feedforward-s13");
 }
 
+TEST(ExperimentWatch, TrialsKnownOnlyFromCompactResultsCountToo) {
+  TempDir d, r1, r2;
+  write_trial(d / "feedforward-s1.lcmlog", {1.0, 1.1}, 2);
+  // Its result is not shown: the log is there.
+  write_result(r1 / "feedforward-s1.results.json", 1, {9.0, 9.0});
+  write_result(r1 / "recurrent-s2.results.json", 2, {5.0, 5.1});
+  // Two results of one trial (two milestones): the one with more generations is shown.
+  write_result(r1 / "recurrent-s6.results.json", 6, {4.0});
+  write_result(r2 / "recurrent-s6.results.json", 6, {4.0, 4.5, 6.0}, 3);
+  std::ofstream(r2 / "recurrent-s10.results.json") << "{\"format\": \"robozoo-run-results\"";
+  std::ofstream(r2 / "notes.json") << "{}";
+
+  ExperimentWatchOptions o;
+  o.results_dirs = {r1.path, r2.path};
+  ExperimentWatch w(d.path, o);
+  std::vector<TrialProgress> t = w.trials();
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0].name, "feedforward-s1");
+  EXPECT_EQ(t[0].best_so_far, (std::vector<double>{1.0, 1.1}));
+  EXPECT_EQ(t[0].results_path, "");
+  EXPECT_EQ(t[1].name, "recurrent-s2");
+  EXPECT_EQ(t[1].best_so_far, (std::vector<double>{5.0, 5.1}));
+  EXPECT_EQ(t[1].state, "finished");
+  EXPECT_EQ(t[1].planned, 2);
+  EXPECT_EQ(t[1].seed, 2);
+  EXPECT_EQ(t[1].arm, "recurrent");
+  EXPECT_EQ(t[2].name, "recurrent-s6");
+  EXPECT_EQ(t[2].best_so_far, (std::vector<double>{4.0, 4.5, 6.0}));
+  EXPECT_EQ(w.results_of("recurrent-s6"), r2 / "recurrent-s6.results.json");
+  EXPECT_EQ(w.log_of("recurrent-s6"), "");
+  EXPECT_EQ(w.results_of("feedforward-s1"), "");
+
+  nlohmann::json s = nlohmann::json::parse(w.summary());
+  ASSERT_EQ(s["trials"].size(), 3u);
+  EXPECT_EQ(s["trials"][0]["source"], "log");
+  EXPECT_EQ(s["trials"][1]["source"], "result");
+  // Recurrent at generation 1: {5.1, 4.5}: mean 4.8; at generation 2, recurrent-s6 alone.
+  EXPECT_NEAR(s["arms"][1]["mean"][1].get<double>(), 4.8, 1e-12);
+  EXPECT_EQ(s["arms"][1]["n"], nlohmann::json::array({2, 2, 1}));
+  ASSERT_EQ(s["unreadable_results"].size(), 1u);
+  EXPECT_NE(s["unreadable_results"][0].get<std::string>().find("recurrent-s10.results.json"), std::string::npos)
+      << s["unreadable_results"];
+
+  EXPECT_FALSE(w.poll());  // nothing new: no file read again
+  // A result changes (a milestone extended it elsewhere): read again.
+  write_result(r1 / "recurrent-s2.results.json", 2, {5.0, 5.1, 5.2}, 3);
+  EXPECT_TRUE(w.poll());
+  EXPECT_EQ(w.trials()[1].best_so_far, (std::vector<double>{5.0, 5.1, 5.2}));
+  // Its log appears here (the trial runs again on this machine): the log is what is shown.
+  write_trial(d / "recurrent-s2.lcmlog", {5.0}, 3);
+  EXPECT_TRUE(w.poll());
+  t = w.trials();
+  EXPECT_EQ(t[1].name, "recurrent-s2");
+  EXPECT_EQ(t[1].best_so_far, (std::vector<double>{5.0}));
+  EXPECT_EQ(t[1].results_path, "");
+  EXPECT_EQ(w.log_of("recurrent-s2"), d / "recurrent-s2.lcmlog");
+  EXPECT_FALSE(w.poll());
+
+  // A folder whose trials are all known from results is an experiment too.
+  TempDir empty;
+  ExperimentWatch only_results(empty.path, o);
+  EXPECT_EQ(only_results.trials().size(), 3u);
+}
+
 TEST(ExperimentWatch, AFolderWithoutAnExperimentIsRefused) {
   TempDir d;
   std::ofstream(d / "feedforward.lcmlog") << "x";
@@ -158,6 +248,15 @@ TEST(ExperimentWatch, AFolderWithoutAnExperimentIsRefused) {
   EXPECT_NE(o.status, 0);
   EXPECT_NE(o.output.find("no experiment here"), std::string::npos) << o.output;
   EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+  // --results must be a folder, and is for --experiment only.
+  const robozoo::testing::Outcome missing = robozoo::testing::run_shell(
+      robozoo::testing::bin("robozoo-view") + " --experiment " + d.path + " --results " + (d / "none"));
+  EXPECT_EQ(missing.status, 2) << missing.output;
+  EXPECT_NE(missing.output.find("--results " + (d / "none") + ": not a folder"), std::string::npos) << missing.output;
+  const robozoo::testing::Outcome stray = robozoo::testing::run_shell(
+      robozoo::testing::bin("robozoo-view") + " " + (d / "feedforward.lcmlog") + " --results " + d.path);
+  EXPECT_EQ(stray.status, 2) << stray.output;
+  EXPECT_NE(stray.output.find("are for --experiment"), std::string::npos) << stray.output;
 }
 
 }  // namespace

@@ -74,12 +74,16 @@ function draw() {
 
 function table() {
   const s = state.summary;
-  $("source").textContent = s.dir;
+  const extra = (s.results_dirs || []).length ? ` + compact results in ${s.results_dirs.join(", ")}` : "";
+  const bad = (s.unreadable_results || []).length;
+  $("source").textContent = s.dir + extra + (bad ? ` (${bad} result ${bad === 1 ? "file" : "files"} unreadable)` : "");
+  $("source").title = (s.unreadable_results || []).join("\n");
   $("sig-key").textContent = `marks under the axis: generations where ${s.test} gives p < ${s.alpha}`;
   const rows = s.trials.map((t) => {
     const tr = document.createElement("tr");
     tr.dataset.name = t.name;
-    const cells = [t.name, t.state, `${t.generations} of ${t.planned || "?"}`, num(t.best)];
+    const state = t.source === "result" ? `${t.state} (result)` : t.state;
+    const cells = [t.name, state, `${t.generations} of ${t.planned || "?"}`, num(t.best)];
     cells.forEach((v, i) => {
       const td = document.createElement("td");
       if (i === 0) {
@@ -88,7 +92,10 @@ function table() {
         td.appendChild(sw);
       }
       td.appendChild(document.createTextNode(v));
-      if (i === 1) td.className = "state-" + t.state;
+      if (i === 1) {
+        td.className = "state-" + t.state;
+        if (t.source === "result") td.title = "known from its compact result alone (finished elsewhere); click to re-make its best-of-run robot";
+      }
       tr.appendChild(td);
     });
     tr.addEventListener("click", () => window.open(`/trial?name=${encodeURIComponent(t.name)}`, "_blank"));
@@ -99,7 +106,8 @@ function table() {
     const dt = document.createElement("dt"), dd = document.createElement("dd");
     const last = a.mean.length - 1;
     dt.textContent = a.arm;
-    dd.textContent = last < 0 ? "–" : `${a.n[last]} trials at generation ${last}: ${num(a.mean[last])} ± ${num(a.se[last])}`;
+    dd.textContent = last < 0 ? "–" :
+      `${a.n[last]} ${a.n[last] === 1 ? "trial" : "trials"} at generation ${last}: ${num(a.mean[last])} ± ${num(a.se[last])}`;
     return [dt, dd];
   }));
 }

@@ -1,0 +1,93 @@
+// The page of one trial of robozoo-view --experiment: a trial known only from
+// its compact result shows its best-of-run robot, re-made by this build from
+// a real run's result; a result whose fitness this build does not give, and
+// an unknown trial, are answered 404 with the reason.
+#include "view/trial_page.hpp"
+
+#include <fcntl.h>  // tests/support/subprocess.hpp uses open()
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "evolve/run/evaluator.hpp"
+#include "evolve/run/evolution.hpp"
+#include "study/analysis/read/run_results.hpp"
+#include "tests/support/small_run.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo::view {
+namespace {
+
+using robozoo::testing::TempDir;
+
+AssetDirs source_dirs() { return {std::string(ROBOZOO_SOURCE_DIR) + "/view/page", ROBOZOO_THREE_DIR}; }
+
+/// The compact result of a real small run (3 generations, champions simulated).
+RunResults real_result(const TempDir& dir) {
+  RunConfig c = robozoo::testing::small_run_config(3);
+  c.regime = Regime::Recurrent;
+  InProcessEvaluator evaluator(c.eval);
+  EvolveOptions o;
+  o.log_path = dir / "recurrent-s7.lcmlog";
+  o.run_id = "recurrent-s7";
+  Evolution evo(c, o, evaluator);
+  evo.run({});
+  return results_from_log(o.log_path);
+}
+
+/// The text of <script type="application/json" id="robozoo-data">.
+nlohmann::json inline_data(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"robozoo-data\">";
+  const size_t a = html.find(open);
+  if (a == std::string::npos) return nullptr;
+  const size_t b = html.find("</script>", a);
+  return nlohmann::json::parse(html.substr(a + open.size(), b - a - open.size()));
+}
+
+TEST(TrialPage, ATrialKnownFromItsResultShowsItsBestOfRunRobotMadeAgain) {
+  TempDir runs, logs, results;
+  const RunResults r = real_result(runs);
+  write_run_results(results / "recurrent-s7.results.json", r);
+  ExperimentWatchOptions o;
+  o.results_dirs = {results.path};
+  const ExperimentWatch watch(logs.path, o);
+  const HttpReply page = trial_page(watch, source_dirs(), "recurrent-s7");
+  ASSERT_EQ(page.status, 200) << page.body.substr(0, 300);
+  EXPECT_EQ(page.content_type, "text/html; charset=utf-8");
+  const nlohmann::json frames = inline_data(page.body);
+  ASSERT_TRUE(frames.is_array()) << page.body.substr(0, 300);
+  // The champion frame names the best-of-run genome, with its committed fitness.
+  const ChampionRecord* best = best_of_run(r.run);
+  ASSERT_NE(best, nullptr);
+  bool champion = false;
+  for (const auto& f : frames)
+    if (f.value("t", "") == "champions")
+      for (const auto& c : f["list"]) {
+        EXPECT_EQ(c["id"].get<int64_t>(), best->genome.genome_id) << c;
+        EXPECT_EQ(c["fitness"].get<double>(), best->genome.fitness) << c;
+        champion = true;
+      }
+  EXPECT_TRUE(champion) << frames.dump().substr(0, 600);
+  // The page names the trial's re-made log; no temporary folder is left behind.
+  EXPECT_NE(frames[0].dump().find("recurrent-s7-best-of-run.lcmlog"), std::string::npos) << frames[0];
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+    EXPECT_EQ(e.path().filename().string().rfind("robozoo-view-trial-", 0), std::string::npos) << e.path();
+
+  // A result this build does not reproduce: the reason, no page.
+  RunResults changed = r;
+  for (auto& c : changed.run.champions)
+    if (c.genome.genome_id == best->genome.genome_id) c.genome.fitness += 1;
+  write_run_results(results / "recurrent-s7.results.json", changed);
+  ExperimentWatch watch2(logs.path, o);
+  const HttpReply refused = trial_page(watch2, source_dirs(), "recurrent-s7");
+  EXPECT_EQ(refused.status, 404);
+  EXPECT_NE(refused.body.find("recurrent-s7: "), std::string::npos) << refused.body;
+  EXPECT_NE(refused.body.find("fitness"), std::string::npos) << refused.body;
+
+  const HttpReply unknown = trial_page(watch, source_dirs(), "recurrent-s99");
+  EXPECT_EQ(unknown.status, 404);
+  EXPECT_EQ(unknown.body, "no trial recurrent-s99\n");
+}
+
+}  // namespace
+}  // namespace robozoo::view
