@@ -9,8 +9,6 @@
 
 #include <filesystem>
 
-#include "evolve/run/evaluator.hpp"
-#include "evolve/run/evolution.hpp"
 #include "study/analysis/read/run_results.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
@@ -24,15 +22,8 @@ AssetDirs source_dirs() { return {std::string(ROBOZOO_SOURCE_DIR) + "/view/page"
 
 /// The compact result of a real small run (3 generations, champions simulated).
 RunResults real_result(const TempDir& dir) {
-  RunConfig c = robozoo::testing::small_run_config(3);
-  c.regime = Regime::Recurrent;
-  InProcessEvaluator evaluator(c.eval);
-  EvolveOptions o;
-  o.log_path = dir / "recurrent-s7.lcmlog";
-  o.run_id = "recurrent-s7";
-  Evolution evo(c, o, evaluator);
-  evo.run({});
-  return results_from_log(o.log_path);
+  robozoo::testing::evolve_small_run(dir / "recurrent-s7.lcmlog", "recurrent-s7", 3);
+  return results_from_log(dir / "recurrent-s7.lcmlog");
 }
 
 /// The text of <script type="application/json" id="robozoo-data">.

@@ -9,8 +9,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "evolve/run/evaluator.hpp"
-#include "evolve/run/evolution.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
@@ -20,16 +18,8 @@ namespace {
 using robozoo::testing::TempDir;
 
 RunResults evolve_results(const TempDir& dir, int generations, int64_t seed = 7) {
-  RunConfig c = robozoo::testing::small_run_config(generations);
-  c.seed = seed;
-  c.regime = Regime::Recurrent;
-  InProcessEvaluator evaluator(c.eval);
-  EvolveOptions o;
-  o.log_path = dir / "recurrent-s7.lcmlog";
-  o.run_id = "recurrent-s7";
-  Evolution evo(c, o, evaluator);
-  evo.run({});
-  return results_from_log(o.log_path);
+  robozoo::testing::evolve_small_run(dir / "recurrent-s7.lcmlog", "recurrent-s7", generations, seed);
+  return results_from_log(dir / "recurrent-s7.lcmlog");
 }
 
 struct Runs {

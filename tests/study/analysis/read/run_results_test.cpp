@@ -28,16 +28,7 @@ using robozoo::testing::TempDir;
 struct RealRun {
   TempDir dir;
   std::string log = dir / "recurrent-s7.lcmlog";
-  RealRun() {
-    RunConfig c = robozoo::testing::small_run_config(5);
-    c.regime = Regime::Recurrent;
-    InProcessEvaluator evaluator(c.eval);
-    EvolveOptions o;
-    o.log_path = log;
-    o.run_id = "recurrent-s7";
-    Evolution evo(c, o, evaluator);
-    evo.run({});
-  }
+  RealRun() { robozoo::testing::evolve_small_run(log, "recurrent-s7", 5); }
 };
 
 const RealRun& real_run() {
