@@ -61,14 +61,21 @@ std::function<bool()> poll_interrupts() {
   };
 }
 
-StopWatcher::StopWatcher(std::string program) : program_(std::move(program)) {
+StopWatcher::StopWatcher(std::string program) : StopWatcher(std::move(program), std::chrono::milliseconds(0)) {}
+
+StopWatcher::StopWatcher(std::string program, std::chrono::milliseconds delay)
+    : program_(std::move(program)), delay_(delay) {
   if (!stop_signals_blocked())
     throw std::logic_error("StopWatcher: block_stop_signals() must run before the watcher starts");
   thread_ = std::thread([this] { watch(); });
 }
 
 StopWatcher::~StopWatcher() {
-  stopping_ = true;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  stopped_.notify_all();
   pthread_kill(thread_.native_handle(), SIGTERM);  // wakes sigwait; `stopping_` says it is us
   thread_.join();
   unblock_stop_signals();
@@ -89,6 +96,11 @@ void StopWatcher::watch() {
     int sig = 0;
     if (sigwait(&set, &sig) != 0) continue;
     if (stopping_) return;
+    if (delay_.count() > 0) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      if (stopped_.wait_for(lock, delay_, [this] { return stopping_.load(); })) return;
+    }
+    if (program_.empty()) ::_exit(128 + sig);
     std::string line = program_ + ": stopped by signal " + std::to_string(sig);
     if (const char* name = strsignal(sig)) line += std::string(" (") + name + ")";
     {

@@ -28,8 +28,8 @@ int main(int argc, char** argv) {
       session = std::make_unique<robozoo::MpiSession>(&argc, &argv);
       if (session->rank() == 0)
         watcher = std::make_unique<robozoo::StopWatcher>("robozoo-evolve");
-      else
-        robozoo::unblock_stop_signals();  // worker ranks: SIGTERM ends them as usual
+      else  // worker ranks end silently, after rank 0 has had time to say how to resume
+        watcher = std::make_unique<robozoo::StopWatcher>("", robozoo::kWorkerStopDelay);
     } catch (const std::exception& e) {
       std::cerr << "robozoo-evolve: --mpi: " << e.what() << "\n";
       return 2;

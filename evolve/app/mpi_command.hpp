@@ -4,6 +4,7 @@
 // over an MpiTransport; ranks 1..N-1 evaluate, with the local workers' code.
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <string>
 
 #include "evolve/app/run_command.hpp"
@@ -17,6 +18,13 @@ namespace robozoo {
 /// failed and how to resume) and ends the whole job (MPI_Abort). `watcher` turns
 /// mpirun's SIGTERM (a rank died, the job was cancelled) into a line saying how to resume.
 int run_mpi_root(const CLI::App& app, const RunOptions& o, const MpiSession& session, StopWatcher& watcher);
+
+/// How long a worker rank lives on after a stop signal (SIGTERM from mpirun, a
+/// cancelled job): rank 0 is stopped by the same signal and says how to resume
+/// first; mpirun's SIGKILL after rank 0's exit (or its own timeout, 1 s by
+/// default) ends the workers. Longer than that timeout, shorter than a batch
+/// system's grace before its own SIGKILL (Slurm's KillWait: 30 s by default).
+constexpr std::chrono::milliseconds kWorkerStopDelay{5000};
 
 /// Ranks 1..N-1: evaluate what rank 0 sends until it is done; 0 then. A failure
 /// (a bad frame, an MPI error) prints one line naming the rank and ends the job.

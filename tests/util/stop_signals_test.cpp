@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <string>
 #include <thread>
@@ -77,6 +78,42 @@ TEST(StopWatcher, MessageMadeWhenTheSignalComes) {
   });
   ASSERT_TRUE(WIFEXITED(e.wait_status));
   EXPECT_EQ(e.err, std::string("prog: stopped by signal 15 (") + strsignal(SIGTERM) + "): after 4 generations\n");
+}
+
+TEST(StopWatcher, WithADelayEndsSilentlyNoSoonerThanTheDelay) {
+  constexpr std::chrono::milliseconds delay{300};
+  const auto start = std::chrono::steady_clock::now();
+  const Ended e = in_child([delay] {
+    block_stop_signals();
+    StopWatcher watcher("", delay);
+    ::kill(::getpid(), SIGTERM);
+    std::this_thread::sleep_for(std::chrono::seconds(10));  // the watcher ends us first
+    ::_exit(0);
+  });
+  const auto lived = std::chrono::steady_clock::now() - start;
+  ASSERT_TRUE(WIFEXITED(e.wait_status));
+  EXPECT_EQ(WEXITSTATUS(e.wait_status), 128 + SIGTERM);
+  EXPECT_EQ(e.err, "");  // an empty program name: no line
+  EXPECT_GE(lived, delay);
+}
+
+TEST(StopWatcher, DestroyedDuringTheDelayTheProcessGoesOn) {
+  const Ended e = in_child([] {
+    block_stop_signals();
+    {
+      StopWatcher watcher("prog", std::chrono::seconds(10));
+      ::kill(::getpid(), SIGTERM);
+      sigset_t pending;
+      do {  // until the watcher has taken the signal (and waits out its delay)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        sigpending(&pending);
+      } while (sigismember(&pending, SIGTERM) == 1);
+    }  // the program ends as it would have: the watcher does not end it
+    ::_exit(5);
+  });
+  ASSERT_TRUE(WIFEXITED(e.wait_status));
+  EXPECT_EQ(WEXITSTATUS(e.wait_status), 5);
+  EXPECT_EQ(e.err, "");
 }
 
 TEST(StopWatcher, AfterTheWatcherASignalHasItsDefaultAction) {
