@@ -15,11 +15,6 @@ namespace {
 
 using namespace robozoo::testing;
 
-const LogContents& small_log() {
-  static const LogContents log = read_event_log(small_run_log());
-  return log;
-}
-
 /// The first pose record of the log whose genome is a champion with a trajectory, past step 0.
 int64_t some_pose(size_t n = 10) { return nth_on(small_log(), kChannelPose, n); }
 

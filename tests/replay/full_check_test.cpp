@@ -14,11 +14,6 @@ namespace {
 
 using namespace robozoo::testing;
 
-const LogContents& small_log() {
-  static const LogContents log = read_event_log(small_run_log());
-  return log;
-}
-
 /// Re-runs in process (the evaluator the small run was made with).
 FullCheckReport rerun(const std::string& path, FullCheckOptions o = {}, std::vector<int>* calls = nullptr) {
   std::unique_ptr<InProcessEvaluator> evaluator;

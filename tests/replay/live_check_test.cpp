@@ -12,11 +12,6 @@ namespace {
 
 using namespace robozoo::testing;
 
-const LogContents& small_log() {
-  static const LogContents log = read_event_log(small_run_log());
-  return log;
-}
-
 struct Fed {
   LiveCheckSummary summary;
   std::vector<std::string> lines;

@@ -16,11 +16,6 @@ namespace {
 
 using namespace robozoo::testing;
 
-const LogContents& small_log() {
-  static const LogContents log = read_event_log(small_run_log());
-  return log;
-}
-
 /// Record indices of the poses of the n-th logged trajectory (0-based).
 std::vector<size_t> trajectory_records(size_t n) {
   std::vector<std::vector<size_t>> runs;

@@ -37,6 +37,12 @@ inline const std::string& small_run_log() {
   return path;
 }
 
+/// The small run's log, read once per test program.
+inline const LogContents& small_log() {
+  static const LogContents log = read_event_log(small_run_log());
+  return log;
+}
+
 /// Writes `log`'s events to `path` with EventLogWriter, after `edit` (which may
 /// change a record's bytes, or return false to drop it).
 inline void write_log(const LogContents& log, const std::string& path,

@@ -23,23 +23,13 @@
 #include "tests/support/private_network.hpp"
 #include "tests/support/subprocess.hpp"
 #include "tests/support/wait_for.hpp"
+#include "tests/view/screenshots.hpp"
 
 namespace robozoo::view {
 namespace {
 
 using namespace robozoo::testing;
 using Clock = std::chrono::steady_clock;
-
-/// Writes the PNG to `path` (and a copy into ROBOZOO_VIEW_SHOTS) and decodes it.
-render::Image keep_png(const std::vector<uint8_t>& png, const std::string& path) {
-  std::vector<std::string> paths = {path};
-  if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS"))
-    paths.push_back(std::string(keep) + "/" + path.substr(path.rfind('/') + 1));
-  for (const std::string& p : paths)
-    std::ofstream(p, std::ios::binary)
-        .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-  return render::read_png(path);
-}
 
 TEST(ViewShare, ExportedChampionDrawsFromAFileWithNoServer) {
   RUN_IN_PRIVATE_NETWORK(400, false);

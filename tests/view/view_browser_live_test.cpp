@@ -31,6 +31,7 @@
 #include "tests/support/private_network.hpp"
 #include "tests/support/subprocess.hpp"
 #include "tests/support/wait_for.hpp"
+#include "tests/view/screenshots.hpp"
 
 namespace robozoo::view {
 namespace {
@@ -48,29 +49,6 @@ pid_t start_view(const TempDir& dir, std::vector<std::string> extra = {}) {
   EXPECT_TRUE(wait_for([&] { return read_file(dir / "view.txt").find("open http") != std::string::npos; }, 20))
       << read_file(dir / "view.txt");
   return pid;
-}
-
-/// Writes a screenshot to `path` (and, when ROBOZOO_VIEW_SHOTS names a folder,
-/// a copy there to look at) and decodes it.
-render::Image decode_png(const std::vector<uint8_t>& png, const std::string& path) {
-  std::vector<std::string> paths = {path};
-  if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS"))
-    paths.push_back(std::string(keep) + "/" + path.substr(path.rfind('/') + 1));
-  for (const std::string& p : paths)
-    std::ofstream(p, std::ios::binary)
-        .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-  return render::read_png(path);
-}
-
-int changed_pixels(const render::Image& a, const render::Image& b) {
-  if (a.width() != b.width() || a.height() != b.height()) return -1;
-  int n = 0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x) {
-      const render::Rgb p = a.at(x, y), q = b.at(x, y);
-      n += std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b) > 30;
-    }
-  return n;
 }
 
 /// Pixels that are a sphere's (red or blue) in one picture and not the same
@@ -154,9 +132,9 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
     ++pairs;
     EXPECT_TRUE(wait_for(playing, 30)) << stats(a).dump() << read_file(dir / "view.txt");
     s0 = stats(a);
-    one = decode_png(browser.screenshot(a, s0["canvas"]), dir / "one.png");
+    one = keep_png(browser.screenshot(a, s0["canvas"]), dir / "one.png");
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    two = decode_png(browser.screenshot(a, s0["canvas"]), dir / "two.png");
+    two = keep_png(browser.screenshot(a, s0["canvas"]), dir / "two.png");
     s1 = stats(a);
     return s1["robot"] == s0["robot"];
   };
@@ -221,7 +199,7 @@ TEST(ViewBrowser, LiveRunMovesOnThePageAndLateJoinersGetTheHistory) {
   EXPECT_GT(sb["samples"], 10);
   EXPECT_EQ(sb["dropped"], 0);
   const render::testing::Pixels p3 =
-      render::testing::count_colours(decode_png(late.screenshot(b, sb["canvas"]), dir / "late.png"));
+      render::testing::count_colours(keep_png(late.screenshot(b, sb["canvas"]), dir / "late.png"));
   EXPECT_GT(p3.red, 30) << sb.dump();
   EXPECT_GT(p3.blue, 30) << sb.dump();
   std::cout << "live page: " << p1.red << "/" << p2.red << " red, " << p1.blue << "/" << p2.blue << " blue pixels, "
@@ -437,7 +415,7 @@ TEST(ViewBrowser, FrameRateOfAFiftySphereRobot) {
   if (!real) {
     EXPECT_EQ(j["spheres"], 50);
   }
-  const render::Image shot = decode_png(browser.screenshot(a, j["canvas"]), dir / "fifty.png");
+  const render::Image shot = keep_png(browser.screenshot(a, j["canvas"]), dir / "fifty.png");
   const render::testing::Pixels p = render::testing::count_colours(shot);
   EXPECT_GT(p.red, 100) << "no robot on the canvas";
   EXPECT_GT(p.blue, 100) << "no robot on the canvas";

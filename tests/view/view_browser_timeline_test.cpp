@@ -20,6 +20,7 @@
 #include "tests/support/browser.hpp"
 #include "tests/support/subprocess.hpp"
 #include "tests/support/wait_for.hpp"
+#include "tests/view/screenshots.hpp"
 
 namespace robozoo::view {
 namespace {
@@ -127,18 +128,6 @@ void write_log(const std::string& path) {
   w.sync();
 }
 
-/// Pixels that differ by more than a little between two pictures of one size.
-int changed_pixels(const render::Image& a, const render::Image& b) {
-  if (a.width() != b.width() || a.height() != b.height()) return -1;
-  int n = 0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x) {
-      const render::Rgb p = a.at(x, y), q = b.at(x, y);
-      n += std::abs(p.r - q.r) + std::abs(p.g - q.g) + std::abs(p.b - q.b) > 30;
-    }
-  return n;
-}
-
 int sphere_pixels(const render::Image& img) {
   int n = 0;
   for (int y = 0; y < img.height(); ++y)
@@ -203,13 +192,7 @@ class ViewTimeline : public ::testing::Test {
   }
   /// A screenshot of element `id` (saved as `name`, and kept in ROBOZOO_VIEW_SHOTS when set).
   render::Image shot(const std::string& tab, const std::string& id, const std::string& name) {
-    const std::vector<uint8_t> png = browser_->screenshot(tab, eval(tab, "robozooView.rect('" + id + "')"));
-    std::vector<std::string> paths = {*dir_ / name};
-    if (const char* keep = std::getenv("ROBOZOO_VIEW_SHOTS")) paths.push_back(std::string(keep) + "/" + name);
-    for (const std::string& p : paths)
-      std::ofstream(p, std::ios::binary)
-          .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-    return render::read_png(*dir_ / name);
+    return keep_png(browser_->screenshot(tab, eval(tab, "robozooView.rect('" + id + "')")), *dir_ / name);
   }
 
   static TempDir* dir_;
