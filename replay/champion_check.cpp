@@ -8,7 +8,7 @@
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/neat/population.hpp"
 #include "evolve/run/trajectory.hpp"
-#include "evolve/sim/simulation.hpp"
+#include "evolve/sim/episode/simulation.hpp"
 #include "replay/morphology_compare.hpp"
 #include "replay/pose_compare.hpp"
 #include "runlog/robots/regrow.hpp"

@@ -5,8 +5,8 @@
 
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
-#include "evolve/sim/simulation.hpp"
-#include "evolve/sim/trajectory_sampler.hpp"
+#include "evolve/sim/episode/simulation.hpp"
+#include "evolve/sim/episode/trajectory_sampler.hpp"
 #include "replay/logged_config.hpp"
 #include "runlog/robots/regrow.hpp"
 

@@ -7,7 +7,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/run/trajectory.hpp"
-#include "evolve/sim/outcome.hpp"
+#include "evolve/sim/episode/outcome.hpp"
 #include "replay/number_text.hpp"
 #include "replay/value_compare.hpp"
 #include "runlog/robots/regrow.hpp"

@@ -29,7 +29,7 @@
 #include "evolve/growth/growth.hpp"
 #include "evolve/neat/random_genome.hpp"
 #include "evolve/run/checkpoint.hpp"
-#include "evolve/sim/simulation.hpp"
+#include "evolve/sim/episode/simulation.hpp"
 #include "evolve/core/version.hpp"
 
 using namespace robozoo;

@@ -1,4 +1,4 @@
-// robozoo-simstats: simulates random robots (evolve/sim/random_robot) and
+// robozoo-simstats: simulates random robots (evolve/sim/robots/random_robot) and
 // reports how the physics and the fitness rules treat them: the share of each
 // outcome, acceleration and spin statistics, and simulation speed. Used to tune
 // SimParams' defaults (see evolve/sim/README.md); --csv writes one row per robot.
@@ -14,8 +14,8 @@
 #include <CLI/CLI.hpp>
 
 #include "evolve/core/rng.hpp"
-#include "evolve/sim/random_robot.hpp"
-#include "evolve/sim/simulation.hpp"
+#include "evolve/sim/robots/random_robot.hpp"
+#include "evolve/sim/episode/simulation.hpp"
 #include "evolve/core/version.hpp"
 
 using namespace robozoo;

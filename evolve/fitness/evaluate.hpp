@@ -5,7 +5,7 @@
 #include "evolve/growth/params.hpp"
 #include "evolve/growth/robot.hpp"
 #include "evolve/sim/params.hpp"
-#include "evolve/sim/simulation.hpp"
+#include "evolve/sim/episode/simulation.hpp"
 
 namespace robozoo {
 

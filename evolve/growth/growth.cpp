@@ -1,12 +1,12 @@
 // grow(): growth steps 1-7 of docs/method.md section 2, one stage per file.
 #include "evolve/growth/growth.hpp"
 
-#include "evolve/growth/assemble.hpp"
-#include "evolve/growth/cppn_probe.hpp"
-#include "evolve/growth/grow_body.hpp"
-#include "evolve/growth/prune.hpp"
-#include "evolve/growth/vertical_shift.hpp"
-#include "evolve/growth/weights.hpp"
+#include "evolve/growth/finish/assemble.hpp"
+#include "evolve/growth/body/cppn_probe.hpp"
+#include "evolve/growth/body/grow_body.hpp"
+#include "evolve/growth/finish/prune.hpp"
+#include "evolve/growth/finish/vertical_shift.hpp"
+#include "evolve/growth/finish/weights.hpp"
 
 namespace robozoo {
 

@@ -8,7 +8,7 @@
 #include "evolve/cppn/genome.hpp"
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/growth/robot.hpp"
-#include "evolve/sim/simulation.hpp"
+#include "evolve/sim/episode/simulation.hpp"
 #include "robozoo/bus_status_t.hpp"
 #include "robozoo/generation_t.hpp"
 #include "robozoo/cppn_genome_t.hpp"

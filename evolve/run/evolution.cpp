@@ -11,7 +11,7 @@
 #include "evolve/core/wall_time.hpp"
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/run/trajectory.hpp"
-#include "evolve/sim/simulation.hpp"
+#include "evolve/sim/episode/simulation.hpp"
 
 namespace robozoo {
 

@@ -1,7 +1,7 @@
 #pragma once
 // A champion's trajectory as robozoo logs it: the pose at step 0, at every
 // pose_every-th step, and at the last step simulated (whatever pose_every;
-// evolve/sim/trajectory_sampler).
+// evolve/sim/episode/trajectory_sampler).
 // robozoo-evolve publishes it for each new champion; robozoo-replay check
 // re-creates it to prove that every logged pose is there, once and in order.
 #include <cstdint>
@@ -10,8 +10,8 @@
 
 #include "evolve/cppn/genome.hpp"
 #include "evolve/growth/robot.hpp"
-#include "evolve/sim/simulation.hpp"
-#include "evolve/sim/trajectory_sampler.hpp"
+#include "evolve/sim/episode/simulation.hpp"
+#include "evolve/sim/episode/trajectory_sampler.hpp"
 #include "robozoo/pose_t.hpp"
 
 namespace robozoo {

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/config/run_config.hpp"
-#include "evolve/sim/simulation.hpp"
-#include "evolve/sim/trajectory_sampler.hpp"
+#include "evolve/sim/episode/simulation.hpp"
+#include "evolve/sim/episode/trajectory_sampler.hpp"
 #include "runlog/robots/regrow.hpp"
 #include "runlog/robots/selection.hpp"
 

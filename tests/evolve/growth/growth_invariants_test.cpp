@@ -150,7 +150,7 @@ class Checker {
 
   // Rules (b), (c), (d) for a sphere of radius r at x attached to `parent`
   // (jointed or fused), against the spheres in `existing`: written from
-  // docs/method.md's text, independently of evolve/growth/placement.cpp.
+  // docs/method.md's text, independently of evolve/growth/body/placement.cpp.
   bool admissible(const Eigen::Vector3d& x, double r, int parent, bool jointed,
                   const std::vector<int>& existing) const {
     // Touching is decided with the relative tolerance e (docs/method.md section 2.3),

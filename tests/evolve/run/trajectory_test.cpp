@@ -9,7 +9,7 @@
 
 #include "evolve/neat/initial_genome.hpp"
 #include "evolve/neat/population.hpp"
-#include "evolve/sim/random_robot.hpp"
+#include "evolve/sim/robots/random_robot.hpp"
 
 namespace robozoo {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <cstdint>
 
-#include "evolve/sim/random_robot.hpp"
-#include "evolve/sim/simulation.hpp"
+#include "evolve/sim/robots/random_robot.hpp"
+#include "evolve/sim/episode/simulation.hpp"
 #include "tests/evolve/sim/test_robots.hpp"
 
 namespace robozoo {

@@ -1,7 +1,7 @@
 #pragma once
 // Hand-built robots shared by the simulation tests (built with the library's
 // RobotBuilder; positions in the growth frame, shifted onto the ground).
-#include "evolve/sim/robot_builder.hpp"
+#include "evolve/sim/robots/robot_builder.hpp"
 
 namespace robozoo::test {
 
