@@ -27,7 +27,7 @@
 #include "evolve/cppn/network.hpp"
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/growth/growth.hpp"
-#include "evolve/neat/random_genome.hpp"
+#include "evolve/neat/start/random_genome.hpp"
 #include "evolve/run/checkpoint.hpp"
 #include "evolve/sim/episode/simulation.hpp"
 #include "evolve/core/version.hpp"

@@ -2,8 +2,8 @@
 //
 // For each run r (seed S + r) and each regime (feed-forward first, then
 // recurrent), CPPN-NEAT with a preset's parameters (the project's defaults, or
-// the NEAT paper's own: evolve/neat/xor_presets.hpp) evolves XOR networks
-// (evolve/neat/xor_task.hpp) until some genome solves it or the generation
+// the NEAT paper's own: evolve/neat/xor/xor_presets.hpp) evolves XOR networks
+// (evolve/neat/xor/xor_task.hpp) until some genome solves it or the generation
 // cap is reached (a failure).
 //
 // Evaluations: the default preset counts every genome evaluated up to and
@@ -30,8 +30,8 @@
 #include "evolve/config/run_config.hpp"
 #include "evolve/core/rng.hpp"
 #include "evolve/neat/population.hpp"
-#include "evolve/neat/xor_presets.hpp"
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_presets.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 #include "evolve/core/version.hpp"
 
 namespace {

@@ -11,7 +11,7 @@
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/growth/growth.hpp"
 #include "evolve/neat/population_json.hpp"
-#include "evolve/neat/random_genome.hpp"
+#include "evolve/neat/start/random_genome.hpp"
 
 namespace robozoo {
 

@@ -54,15 +54,15 @@
 
 #include "evolve/core/rng.hpp"
 #include "evolve/cppn/genome.hpp"
-#include "evolve/neat/compatibility.hpp"
-#include "evolve/neat/crossover.hpp"
-#include "evolve/neat/initial_genome.hpp"
-#include "evolve/neat/innovation.hpp"
-#include "evolve/neat/mutation.hpp"
+#include "evolve/neat/species/compatibility.hpp"
+#include "evolve/neat/variation/crossover.hpp"
+#include "evolve/neat/start/initial_genome.hpp"
+#include "evolve/neat/variation/innovation.hpp"
+#include "evolve/neat/variation/mutation.hpp"
 #include "evolve/neat/params.hpp"
-#include "evolve/neat/reproduction.hpp"
-#include "evolve/neat/speciation.hpp"
-#include "evolve/neat/species.hpp"
+#include "evolve/neat/species/reproduction.hpp"
+#include "evolve/neat/species/speciation.hpp"
+#include "evolve/neat/species/species.hpp"
 
 namespace robozoo {
 

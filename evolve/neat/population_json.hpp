@@ -14,7 +14,7 @@
 
 #include "evolve/cppn/genome.hpp"
 #include "evolve/neat/population.hpp"
-#include "evolve/neat/species.hpp"
+#include "evolve/neat/species/species.hpp"
 
 namespace robozoo {
 

@@ -1,7 +1,7 @@
 #include "study/analysis/measure/initial_robots.hpp"
 
 #include "evolve/fitness/evaluate.hpp"
-#include "evolve/neat/initial_genome.hpp"
+#include "evolve/neat/start/initial_genome.hpp"
 
 namespace robozoo {
 

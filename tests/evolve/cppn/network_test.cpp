@@ -6,7 +6,7 @@
 
 #include "evolve/core/rng.hpp"
 #include "evolve/cppn/random_genome.hpp"
-#include "evolve/neat/random_genome.hpp"
+#include "evolve/neat/start/random_genome.hpp"
 
 #include <cstring>
 #include "tests/evolve/neat/tiny_genome.hpp"

@@ -12,7 +12,7 @@
 #include "evolve/cppn/network.hpp"
 #include "evolve/growth/growth.hpp"
 #include "evolve/growth/robot_hash.hpp"
-#include "evolve/neat/random_genome.hpp"
+#include "evolve/neat/start/random_genome.hpp"
 
 namespace robozoo {
 namespace {

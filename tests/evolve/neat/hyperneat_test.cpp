@@ -10,13 +10,13 @@
 #include <map>
 
 #include "evolve/config/run_config.hpp"
-#include "evolve/neat/crossover.hpp"
-#include "evolve/neat/mutation.hpp"
+#include "evolve/neat/variation/crossover.hpp"
+#include "evolve/neat/variation/mutation.hpp"
 #include "evolve/neat/population.hpp"
-#include "evolve/neat/reproduction.hpp"
-#include "evolve/neat/speciation.hpp"
-#include "evolve/neat/xor_presets.hpp"
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/species/reproduction.hpp"
+#include "evolve/neat/species/speciation.hpp"
+#include "evolve/neat/xor/xor_presets.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 #include "tests/evolve/neat/tiny_genome.hpp"
 
 namespace robozoo {

@@ -9,7 +9,7 @@
 #include <limits>
 #include <string>
 
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 
 namespace robozoo {
 namespace {

@@ -5,7 +5,7 @@
 #include <map>
 #include <set>
 
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 
 namespace robozoo {
 namespace {

@@ -9,13 +9,13 @@
 #include <set>
 
 #include "evolve/config/run_config.hpp"
-#include "evolve/neat/compatibility.hpp"
-#include "evolve/neat/crossover.hpp"
-#include "evolve/neat/mutation.hpp"
+#include "evolve/neat/species/compatibility.hpp"
+#include "evolve/neat/variation/crossover.hpp"
+#include "evolve/neat/variation/mutation.hpp"
 #include "evolve/neat/population.hpp"
 #include "evolve/neat/population_json.hpp"
-#include "evolve/neat/reproduction.hpp"
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/species/reproduction.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 #include "tests/evolve/neat/classic_params.hpp"
 #include "tests/evolve/neat/tiny_genome.hpp"
 

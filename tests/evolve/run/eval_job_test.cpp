@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "evolve/neat/random_genome.hpp"
+#include "evolve/neat/start/random_genome.hpp"
 
 namespace robozoo {
 namespace {

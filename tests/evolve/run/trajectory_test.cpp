@@ -7,7 +7,7 @@
 
 #include <stdexcept>
 
-#include "evolve/neat/initial_genome.hpp"
+#include "evolve/neat/start/initial_genome.hpp"
 #include "evolve/neat/population.hpp"
 #include "evolve/sim/robots/random_robot.hpp"
 

@@ -1,4 +1,4 @@
-#include "evolve/neat/innovation.hpp"
+#include "evolve/neat/variation/innovation.hpp"
 
 #include <gtest/gtest.h>
 

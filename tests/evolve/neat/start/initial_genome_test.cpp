@@ -1,4 +1,4 @@
-#include "evolve/neat/initial_genome.hpp"
+#include "evolve/neat/start/initial_genome.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "evolve/neat/params.hpp"
-#include "evolve/neat/species.hpp"
+#include "evolve/neat/species/species.hpp"
 
 namespace robozoo {
 

@@ -1,8 +1,8 @@
-#include "evolve/neat/speciation.hpp"
+#include "evolve/neat/species/speciation.hpp"
 
 #include <algorithm>
 
-#include "evolve/neat/compatibility.hpp"
+#include "evolve/neat/species/compatibility.hpp"
 
 namespace robozoo {
 

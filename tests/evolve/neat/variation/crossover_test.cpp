@@ -1,4 +1,4 @@
-#include "evolve/neat/crossover.hpp"
+#include "evolve/neat/variation/crossover.hpp"
 
 #include <gtest/gtest.h>
 

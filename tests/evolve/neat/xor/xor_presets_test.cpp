@@ -1,4 +1,4 @@
-#include "evolve/neat/xor_presets.hpp"
+#include "evolve/neat/xor/xor_presets.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "evolve/config/run_config.hpp"
 #include "evolve/neat/population.hpp"
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 
 namespace robozoo {
 namespace {

@@ -1,4 +1,4 @@
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 
 #include <algorithm>
 #include <cmath>

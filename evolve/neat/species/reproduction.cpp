@@ -1,4 +1,4 @@
-#include "evolve/neat/reproduction.hpp"
+#include "evolve/neat/species/reproduction.hpp"
 
 #include <algorithm>
 #include <cmath>

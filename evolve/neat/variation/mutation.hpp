@@ -4,7 +4,7 @@
 
 #include "evolve/core/rng.hpp"
 #include "evolve/cppn/genome.hpp"
-#include "evolve/neat/innovation.hpp"
+#include "evolve/neat/variation/innovation.hpp"
 #include "evolve/neat/params.hpp"
 
 namespace robozoo {

@@ -1,8 +1,8 @@
-#include "evolve/neat/random_genome.hpp"
+#include "evolve/neat/start/random_genome.hpp"
 
-#include "evolve/neat/initial_genome.hpp"
-#include "evolve/neat/innovation.hpp"
-#include "evolve/neat/mutation.hpp"
+#include "evolve/neat/start/initial_genome.hpp"
+#include "evolve/neat/variation/innovation.hpp"
+#include "evolve/neat/variation/mutation.hpp"
 
 namespace robozoo {
 

@@ -1,4 +1,4 @@
-#include "evolve/neat/mutation.hpp"
+#include "evolve/neat/variation/mutation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <set>
 #include <tuple>
 
-#include "evolve/neat/initial_genome.hpp"
+#include "evolve/neat/start/initial_genome.hpp"
 #include "tests/evolve/neat/classic_params.hpp"
 #include "tests/evolve/neat/tiny_genome.hpp"
 

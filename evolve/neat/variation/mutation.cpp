@@ -1,4 +1,4 @@
-#include "evolve/neat/mutation.hpp"
+#include "evolve/neat/variation/mutation.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "evolve/neat/initial_genome.hpp"
+#include "evolve/neat/start/initial_genome.hpp"
 
 namespace robozoo {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "evolve/cppn/genome.hpp"
 #include "evolve/neat/params.hpp"
-#include "evolve/neat/species.hpp"
+#include "evolve/neat/species/species.hpp"
 
 namespace robozoo {
 

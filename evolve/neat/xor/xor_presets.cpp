@@ -1,8 +1,8 @@
-#include "evolve/neat/xor_presets.hpp"
+#include "evolve/neat/xor/xor_presets.hpp"
 
 #include <stdexcept>
 
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 
 namespace robozoo {
 namespace {

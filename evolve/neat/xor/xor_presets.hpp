@@ -17,7 +17,7 @@
 
 #include "evolve/cppn/genome.hpp"
 #include "evolve/neat/params.hpp"
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 
 namespace robozoo {
 

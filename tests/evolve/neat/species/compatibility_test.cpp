@@ -1,4 +1,4 @@
-#include "evolve/neat/compatibility.hpp"
+#include "evolve/neat/species/compatibility.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-#include "evolve/neat/speciation.hpp"
+#include "evolve/neat/species/speciation.hpp"
 
 #include <gtest/gtest.h>
 
 #include "evolve/neat/population.hpp"
-#include "evolve/neat/xor_task.hpp"
+#include "evolve/neat/xor/xor_task.hpp"
 
 namespace robozoo {
 namespace {
