@@ -14,15 +14,15 @@
 
 #include "evolve/core/version.hpp"
 #include "evolve/io/bus.hpp"
-#include "view/assets.hpp"
-#include "view/bus_feed.hpp"
-#include "view/experiment_watch.hpp"
-#include "view/trial_page.hpp"
+#include "view/serve/assets.hpp"
+#include "view/feed/bus_feed.hpp"
+#include "view/feed/experiment_watch.hpp"
+#include "view/replays/trial_page.hpp"
 #include "util/exit_status.hpp"
-#include "view/export.hpp"
-#include "view/log_feed.hpp"
-#include "view/server.hpp"
-#include "view/view_state.hpp"
+#include "view/replays/export.hpp"
+#include "view/feed/log_feed.hpp"
+#include "view/serve/server.hpp"
+#include "view/state/view_state.hpp"
 #include "util/stop_signals.hpp"
 
 namespace {

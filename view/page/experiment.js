@@ -1,5 +1,5 @@
 // robozoo-view --experiment: the experiment page. Polls /experiment.json (the
-// server reads the folder; ExperimentWatch in view/experiment_watch.hpp) and
+// server reads the folder; ExperimentWatch in view/feed/experiment_watch.hpp) and
 // draws each arm's mean best-so-far per generation with its standard error,
 // every trial's curve faint behind it, and the generations where two arms
 // differ significantly; lists the trials (click: that trial's champion).

@@ -1,5 +1,5 @@
 // robozoo-view's page: one WebSocket to the server (frames described in
-// view/frames.hpp), the 3D view, the chart, the strip, the run's facts and its
+// view/state/frames.hpp), the 3D view, the chart, the strip, the run's facts and its
 // champions, the shown champion's CPPN and the timeline. It opens on the
 // newest champion and plays it: no mouse needed.
 import { Scene } from "/scene.js";
@@ -162,7 +162,7 @@ function writeMoment() {
   }
 }
 
-/// Every frame from the server (view/frames.hpp) comes in here, whatever its
+/// Every frame from the server (view/state/frames.hpp) comes in here, whatever its
 /// source: the socket below, or recorded frames fed by robozooView.feed.
 function onFrame(m) {
   state.framesReceived++;
@@ -272,7 +272,7 @@ window.robozooView = {
     dropped: state.stats ? state.stats.dropped : null, run: state.run ? state.run.id : null,
   }),
   replay,
-  /// The data-flow entry point: one frame (an object as in view/frames.hpp), from any source.
+  /// The data-flow entry point: one frame (an object as in view/state/frames.hpp), from any source.
   feed: onFrame,
   /// Where requests ({"t":"replay","id":N}) go instead of the socket.
   setSender: (f) => { send = f; },

@@ -1,6 +1,6 @@
 // The robot frame carries what the page draws of a champion: its spheres, its
 // sensors and its CPPN (nodes with drawing positions, links with weights).
-#include "view/frames.hpp"
+#include "view/state/frames.hpp"
 
 #include <gtest/gtest.h>
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "runlog/read/message_collector.hpp"
-#include "view/client_queue.hpp"
+#include "view/serve/client_queue.hpp"
 
 namespace robozoo::view {
 

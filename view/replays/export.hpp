@@ -4,7 +4,7 @@
 // drawing. The file holds the page (index.html with its style sheets and every
 // module it imports, transitively), three.js (three.min.js plus a small module
 // that re-exports its names) and the champion's frames, exactly those the
-// server would send a page (view/frames.hpp), in
+// server would send a page (view/state/frames.hpp), in
 // <script type="application/json" id="robozoo-data">; page/offline.js finds
 // them and feeds them to the page instead of the WebSocket.
 #include <cstdint>
@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "view/assets.hpp"
+#include "view/serve/assets.hpp"
 
 namespace robozoo::view {
 

@@ -12,7 +12,7 @@
 #include "study/analysis/read/run_results.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"
-#include "view/experiment_watch.hpp"
+#include "view/feed/experiment_watch.hpp"
 
 namespace robozoo::view {
 namespace {

@@ -1,4 +1,4 @@
-#include "view/log_feed.hpp"
+#include "view/feed/log_feed.hpp"
 
 #include <algorithm>
 #include <cmath>

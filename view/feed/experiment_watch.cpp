@@ -1,4 +1,4 @@
-#include "view/experiment_watch.hpp"
+#include "view/feed/experiment_watch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "view/bus_feed.hpp"
+#include "view/feed/bus_feed.hpp"
 
 #include <chrono>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "view/trial_page.hpp"
+#include "view/replays/trial_page.hpp"
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 
 #include "study/analysis/read/champion_log.hpp"
 #include "study/analysis/read/run_results.hpp"
-#include "view/export.hpp"
+#include "view/replays/export.hpp"
 
 namespace robozoo::view {
 

@@ -12,7 +12,7 @@
 #include <ostream>
 #include <string>
 
-#include "view/view_state.hpp"
+#include "view/state/view_state.hpp"
 
 namespace robozoo::view {
 

@@ -11,7 +11,7 @@
 #include "evolve/io/event_log.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"
-#include "view/export.hpp"
+#include "view/replays/export.hpp"
 
 namespace robozoo::view {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "evolve/io/bus.hpp"
-#include "view/view_state.hpp"
+#include "view/state/view_state.hpp"
 
 namespace robozoo::view {
 

@@ -8,9 +8,9 @@
 // committed fitness, r, d or outcome, the answer says so and shows nothing.
 #include <string>
 
-#include "view/assets.hpp"
-#include "view/experiment_watch.hpp"
-#include "view/server.hpp"
+#include "view/serve/assets.hpp"
+#include "view/feed/experiment_watch.hpp"
+#include "view/serve/server.hpp"
 
 namespace robozoo::view {
 

@@ -1,4 +1,4 @@
-#include "view/server.hpp"
+#include "view/serve/server.hpp"
 
 #include <atomic>
 #include <condition_variable>

@@ -2,7 +2,7 @@
 // its compact result shows its best-of-run robot, re-made by this build from
 // a real run's result; a result whose fitness this build does not give, and
 // an unknown trial, are answered 404 with the reason.
-#include "view/trial_page.hpp"
+#include "view/replays/trial_page.hpp"
 
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>

@@ -11,8 +11,8 @@
 #include <optional>
 #include <string>
 
-#include "view/assets.hpp"
-#include "view/view_state.hpp"
+#include "view/serve/assets.hpp"
+#include "view/state/view_state.hpp"
 
 namespace robozoo::view {
 

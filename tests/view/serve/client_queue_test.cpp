@@ -1,4 +1,4 @@
-#include "view/client_queue.hpp"
+#include "view/serve/client_queue.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "view/assets.hpp"
+#include "view/serve/assets.hpp"
 
 #include <fstream>
 #include <sstream>

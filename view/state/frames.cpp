@@ -1,4 +1,4 @@
-#include "view/frames.hpp"
+#include "view/state/frames.hpp"
 
 #include <cmath>
 

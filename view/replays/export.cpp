@@ -1,4 +1,4 @@
-#include "view/export.hpp"
+#include "view/replays/export.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -11,7 +11,7 @@
 #include "runlog/read/log_source.hpp"
 #include "runlog/robots/selection.hpp"
 #include "runlog/robots/trajectory.hpp"
-#include "view/frames.hpp"
+#include "view/state/frames.hpp"
 
 namespace robozoo::view {
 

@@ -1,6 +1,6 @@
 // robozoo-view's web server in this process, on a free loopback port: the
 // fixed set of files, and what closes a page's connection.
-#include "view/server.hpp"
+#include "view/serve/server.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "view/view_state.hpp"
+#include "view/state/view_state.hpp"
 
 #include <algorithm>
 

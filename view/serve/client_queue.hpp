@@ -10,7 +10,7 @@
 #include <mutex>
 #include <optional>
 
-#include "view/frames.hpp"
+#include "view/state/frames.hpp"
 
 namespace robozoo::view {
 
