@@ -60,6 +60,15 @@ std::string gnuplot_quote(const std::string& s) {
   return q + "\"";
 }
 
+std::string gnuplot_text(const std::string& s) {
+  std::string marked;
+  for (char c : s) {
+    if (c == '_' || c == '@' || c == '&' || c == '~' || c == '{' || c == '}') marked += '\\';
+    marked += c;
+  }
+  return gnuplot_quote(marked);
+}
+
 std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std::string& png_path,
                                  const std::string& title, const PlotStyle& style, double alpha) {
   if (curve.empty()) throw std::invalid_argument("fitness_curve_script: no generation to plot");
@@ -82,23 +91,23 @@ std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std
     s << p.generation << ' ' << num(p.control.mean) << ' ' << num(p.control.se) << ' ' << num(p.experimental.mean)
       << ' ' << num(p.experimental.se) << ' ' << num(p.student.p) << '\n';
   s << "EOD\n";
-  s << "set title " << gnuplot_quote(title) << "\n"
+  s << "set title " << gnuplot_text(title) << "\n"
     << "set xlabel \"generation\"\nset ylabel \"best-so-far fitness (r + d)\"\n"
     << "set key top left\nset grid\nset style fill transparent solid 0.15 noborder\n"
     << "plot $curve using 1:($2-$3):($2+$3) with filledcurves lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($4-$5):($4+$5) with filledcurves lc rgb \"#d62728\" notitle, \\\n"
-    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title \"control: " << style.control_label
-    << " CPPNs\", \\\n"
+    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title " << gnuplot_text("control: " + style.control_label + " CPPNs")
+    << ", \\\n"
     << "     $curve using 1:($2-$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($2+$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
-    << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title \"experimental: " << style.experimental_label
-    << " CPPNs\", \\\n"
+    << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title "
+    << gnuplot_text("experimental: " + style.experimental_label + " CPPNs") << ", \\\n"
     << "     $curve using 1:($4-$5) with lines dt 3 lc rgb \"#d62728\" notitle, \\\n"
     << "     $curve using 1:($4+$5) with lines dt 3 lc rgb \"#d62728\" notitle";
   if (any_mark)
     s << ", \\\n     $curve using 1:($6 < " << num(alpha) << " ? " << num(mark_y)
       << " : NaN) with points pt 7 ps 0.6 lc rgb \"black\" title "
-      << gnuplot_quote("p < " + num(alpha) + " (Student's t per generation, uncorrected)");
+      << gnuplot_text("p < " + num(alpha) + " (Student's t per generation, uncorrected)");
   s << "\n";
   s << "unset output\n";
   return s.str();
@@ -122,9 +131,9 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
       << "0 " << num(mean(c.control)) << ' ' << num(c.control.se * k) << "\n"
       << "1 " << num(mean(c.experimental)) << ' ' << num(c.experimental.se * k) << "\nEOD\n";
   }
-  s << "set multiplot layout " << rows << "," << columns << " title " << gnuplot_quote(title) << "\n"
+  s << "set multiplot layout " << rows << "," << columns << " title " << gnuplot_text(title) << "\n"
     << "set style fill solid 1.0 border rgb \"black\"\nset boxwidth 0.6\nset xrange [-0.6:1.6]\n"
-    << "set xtics (" << gnuplot_quote(style.control_label) << " 0, " << gnuplot_quote(style.experimental_label)
+    << "set xtics (" << gnuplot_text(style.control_label) << " 0, " << gnuplot_text(style.experimental_label)
     << " 1) scale 0\nset grid ytics\nset key off\n"
     << "set offsets 0, 0, graph 0.1, 0\n";
   for (int i = 0; i < n; ++i) {
@@ -141,7 +150,7 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
     if (!c.stars.empty()) t += "  " + c.stars;
     const bool nonneg = (c.control.n == 0 || c.control.mean - c.control.se >= 0) &&
                         (c.experimental.n == 0 || c.experimental.mean - c.experimental.se >= 0);
-    s << "set title " << gnuplot_quote(t) << " font \",10\"\n"
+    s << "set title " << gnuplot_text(t) << " font \",10\"\n"
       << (nonneg ? "set yrange [0:*]\n" : "set autoscale y\n") << "plot $p" << i
       << " every ::0::0 using 1:2 with boxes lc rgb \"#ffffff\", \\\n"
       << "     $p" << i << " every ::1::1 using 1:2 with boxes lc rgb \"#d62728\", \\\n"
@@ -170,12 +179,13 @@ std::string outcome_shares_script(const std::vector<std::array<double, 6>>& shar
     s << '\n';
   }
   s << "EOD\n";
-  s << "set title " << gnuplot_quote(title) << "\n"
+  s << "set title " << gnuplot_text(title) << "\n"
     << "set xlabel \"generation\"\nset ylabel \"share of the population (%)\"\nset yrange [0:100]\n"
+    << (shares.size() > 1 ? "set xrange [0:" + std::to_string(shares.size() - 1) + "]\n" : "")
     << "set key outside right\nset style fill solid 0.8 noborder\nplot ";
   for (int k = 5; k >= 0; --k) {
     s << "$shares using 1:" << (k + 2) << " with filledcurves x1 lc rgb \"" << colours[k] << "\" title "
-      << gnuplot_quote(names[k]) << (k > 0 ? ", \\\n     " : "\n");
+      << gnuplot_text(names[k]) << (k > 0 ? ", \\\n     " : "\n");
   }
   s << "unset output\n";
   return s.str();

@@ -41,4 +41,10 @@ std::string outcome_shares_script(const std::vector<std::array<double, 6>>& shar
 /// Escapes a string for a double-quoted gnuplot string literal.
 std::string gnuplot_quote(const std::string& s);
 
+/// A double-quoted gnuplot string literal for text drawn by the "enhanced"
+/// terminal (titles, keys, tick labels): `_ @ & ~ { }` print as themselves
+/// (enhanced text would take `max_spheres` for max with a subscript s);
+/// `^` stays a superscript, for units such as m^2.
+std::string gnuplot_text(const std::string& s);
+
 }  // namespace robozoo

@@ -81,5 +81,28 @@ TEST(PlotScripts, GnuplotErrorsAreReported) {
 
 TEST(PlotScripts, Quoting) { EXPECT_EQ(gnuplot_quote("a \"b\"\\\nc"), "\"a \\\"b\\\"\\\\\\nc\""); }
 
+TEST(PlotScripts, EnhancedTextPrintsMarkupCharactersAsThemselves) {
+  // In the file: "max\\_spheres" (the string max\_spheres, which enhanced text prints as max_spheres).
+  EXPECT_EQ(gnuplot_text("max_spheres"), "\"max\\\\_spheres\"");
+  EXPECT_EQ(gnuplot_text("a@b&c~d{e}"), "\"a\\\\@b\\\\&c\\\\~d\\\\{e\\\\}\"");
+  EXPECT_EQ(gnuplot_text("m^2"), "\"m^2\"");
+  // Every drawn text goes through it; file names do not.
+  std::vector<Comparison> one(1);
+  one[0].label = "robots at max_spheres";
+  one[0].unit = "count";
+  one[0].control.n = one[0].experimental.n = 1;
+  const std::string s = comparison_panels_script(one, "out_dir/x_y.png", "fig_title", 1);
+  EXPECT_NE(s.find("set output \"out_dir/x_y.png\""), std::string::npos);
+  EXPECT_NE(s.find("title \"fig\\\\_title\""), std::string::npos);
+  EXPECT_NE(s.find("robots at max\\\\_spheres"), std::string::npos);
+  EXPECT_EQ(s.find("max_spheres"), std::string::npos);
+}
+
+TEST(PlotScripts, OutcomeSharesSpanExactlyTheGenerations) {
+  const std::vector<std::array<double, 6>> shares(3, {0.5, 0.5, 0, 0, 0, 0});
+  EXPECT_NE(outcome_shares_script(shares, "o.png", "t").find("set xrange [0:2]\n"), std::string::npos);
+  EXPECT_EQ(outcome_shares_script({shares[0]}, "o.png", "t").find("set xrange"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace robozoo
