@@ -1,0 +1,84 @@
+set terminal pngcairo enhanced size 1500,750 font "DejaVu Sans,11"
+set output "champion_changes.png"
+$p0 << EOD
+0 66.62746513 3.255052456
+1 97.77777778 1.54401852
+EOD
+$p1 << EOD
+0 1.25700573 0.1495154709
+1 1.666192343 0.149680738
+EOD
+$p2 << EOD
+0 0.6927286143 0.1254883993
+1 3.579749513 3.32869572
+EOD
+$p3 << EOD
+0 7.966666667 0.4380818517
+1 5.5 0.3515156019
+EOD
+$p4 << EOD
+0 65.27196653 3.086135327
+1 98.18181818 1.043307349
+EOD
+$p5 << EOD
+0 1.153240518 0.120172535
+1 1.505592499 0.1497202739
+EOD
+$p6 << EOD
+0 0.6152543534 0.08656209442
+1 2.470184273 2.222765689
+EOD
+$p7 << EOD
+0 0.9664085029 0.08550510948
+1 1.523130531 0.1510058638
+EOD
+set multiplot layout 3,3 title "Section 4: new champions (mean ± 1 s.e.)"
+set style fill solid 1.0 border rgb "black"
+set boxwidth 0.6
+set xrange [-0.6:1.6]
+set xtics ("feed-forward" 0, "recurrent (zero-weight start)" 1) scale 0
+set grid ytics
+set key off
+set offsets 0, 0, graph 0.1, 0
+set title "share of a run's new champions whose topology differs from the\nprevious champion's (per run) (%)\nn = 30 / 30, p < 0.0001  ***" font ",10"
+set yrange [0:*]
+plot $p0 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p0 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p0 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "a run's mean fitness gain of its new champions with a\ndifferent topology (per run) (fitness units)\nn = 30 / 30, p = 0.058" font ",10"
+set yrange [0:*]
+plot $p1 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p1 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p1 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "a run's mean fitness gain of its new champions with the same\ntopology (per run) (fitness units)\nn = 29 / 2, p = 0.0012  **" font ",10"
+set yrange [0:*]
+plot $p2 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p2 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p2 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "new champions per run\nn = 30 / 30, p < 0.0001  ***" font ",10"
+set yrange [0:*]
+plot $p3 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p3 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p3 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "new champions whose topology differs from the previous\nchampion's (pooled) (%)\nn = 239 / 165 (pooled, descriptive)" font ",10"
+set yrange [0:*]
+plot $p4 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p4 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p4 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "fitness gain of a new champion with a different topology\n(pooled) (fitness units)\nn = 156 / 162 (pooled, descriptive)" font ",10"
+set yrange [0:*]
+plot $p5 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p5 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p5 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "fitness gain of a new champion with the same topology (pooled)\n(fitness units)\nn = 83 / 3 (pooled, descriptive)" font ",10"
+set yrange [0:*]
+plot $p6 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p6 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p6 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+set title "fitness gain of any new champion (pooled) (fitness units)\nn = 239 / 165 (pooled, descriptive)" font ",10"
+set yrange [0:*]
+plot $p7 every ::0::0 using 1:2 with boxes lc rgb "#ffffff", \
+     $p7 every ::1::1 using 1:2 with boxes lc rgb "#d62728", \
+     $p7 using 1:2:3 with yerrorbars lc rgb "black" pt 7 ps 0.5
+unset multiplot
+unset output
