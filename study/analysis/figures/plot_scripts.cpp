@@ -96,8 +96,8 @@ std::string fitness_curve_script(const std::vector<CurvePoint>& curve, const std
     << "set key top left\nset grid\nset style fill transparent solid 0.15 noborder\n"
     << "plot $curve using 1:($2-$3):($2+$3) with filledcurves lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($4-$5):($4+$5) with filledcurves lc rgb \"#d62728\" notitle, \\\n"
-    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title " << gnuplot_text("control: " + style.control_label + " CPPNs")
-    << ", \\\n"
+    << "     $curve using 1:2 with lines lw 2 lc rgb \"#1f4fd6\" title "
+    << gnuplot_text("control: " + style.control_label + " CPPNs") << ", \\\n"
     << "     $curve using 1:($2-$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:($2+$3) with lines dt 3 lc rgb \"#1f4fd6\" notitle, \\\n"
     << "     $curve using 1:4 with lines lw 2 lc rgb \"#d62728\" title "
