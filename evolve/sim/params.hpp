@@ -1,7 +1,7 @@
 #pragma once
 // Physics, controller, sensor and fitness-rule parameters (paper 2.4, docs/method.md
 // section 2). Defaults keep random robots of 1-50 spheres stable; each default
-// that was tuned says here how (measured with tools/robozoo-simstats on
+// that was tuned says here how (measured with tools/measure/robozoo-simstats on
 // evolve/sim/robots/random_robot robots; details in evolve/sim/README.md).
 #include <cstdint>
 

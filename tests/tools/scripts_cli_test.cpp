@@ -1,4 +1,4 @@
-// Every script in tools/ and tools/slurm/ answers --help (exit 0, its usage, which
+// Every script under tools/ answers --help (exit 0, its usage, which
 // names the script) and refuses an unknown option with one line and exit 2, before
 // it installs, builds or runs anything. The scripts are found in the source tree, so
 // a new script is checked without a change here.
@@ -19,11 +19,9 @@ namespace {
 
 std::vector<fs::path> scripts() {
   std::vector<fs::path> found;
-  for (const char* dir : {"tools", "tools/slurm"}) {
-    for (const auto& e : fs::directory_iterator(fs::path(ROBOZOO_SOURCE_DIR) / dir)) {
-      const std::string ext = e.path().extension().string();
-      if (e.is_regular_file() && (ext == ".sh" || ext == ".sbatch")) found.push_back(e.path());
-    }
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(ROBOZOO_SOURCE_DIR) / "tools")) {
+    const std::string ext = e.path().extension().string();
+    if (e.is_regular_file() && (ext == ".sh" || ext == ".sbatch")) found.push_back(e.path());
   }
   std::sort(found.begin(), found.end());
   return found;
@@ -44,7 +42,9 @@ TEST(ScriptsCli, TheScriptsAreFound) {
   };
   EXPECT_TRUE(has("tools/demo.sh"));
   EXPECT_TRUE(has("tools/test.sh"));
-  EXPECT_TRUE(has("tools/slurm/robozoo-trials.sbatch"));
+  EXPECT_TRUE(has("tools/experiment/slurm/robozoo-trials.sbatch"));
+  EXPECT_TRUE(has("tools/experiment/paper_experiment.sh"));
+  EXPECT_TRUE(has("tools/measure/bus_loss_study.sh"));
   EXPECT_GE(all.size(), 10u);
 }
 

@@ -1,4 +1,4 @@
-// tools/paper_experiment.sh at toy sizes (--bin: this build's programs): each
+// tools/experiment/paper_experiment.sh at toy sizes (--bin: this build's programs): each
 // milestone keeps its own compact results, a milestone finished on this machine
 // is not run again (so its results are not rewritten from logs a later milestone
 // extended), --collect copies every milestone's results, and on a new machine the
@@ -21,7 +21,7 @@ using namespace robozoo::testing;
 namespace fs = std::filesystem;
 
 std::string script(const TempDir& t, const std::string& dir, const std::string& extra = "") {
-  return "bash '" + std::string(ROBOZOO_SOURCE_DIR) + "/tools/paper_experiment.sh' --bin '" +
+  return "bash '" + std::string(ROBOZOO_SOURCE_DIR) + "/tools/experiment/paper_experiment.sh' --bin '" +
          std::string(ROBOZOO_BIN_DIR) + "' --paper '" + (t / "paper") + "' --dir '" + dir +
          "' --trials 1 --population 6 --steps 100 --generations 2,3,4 --workers 1 " + extra + " </dev/null";
 }
@@ -116,8 +116,9 @@ TEST(PaperExperimentCli, ANewMachineCountsCommittedResultsAndRepeatsTheRest) {
 
 TEST(PaperExperimentCli, RefusesBadSizes) {
   TempDir t;
-  const Outcome o = run_shell("bash '" + std::string(ROBOZOO_SOURCE_DIR) + "/tools/paper_experiment.sh' --dir '" +
-                              (t / "d") + "' --generations 30,60 </dev/null");
+  const Outcome o =
+      run_shell("bash '" + std::string(ROBOZOO_SOURCE_DIR) + "/tools/experiment/paper_experiment.sh' --dir '" +
+                (t / "d") + "' --generations 30,60 </dev/null");
   EXPECT_EQ(o.status, 2) << o.output;
   EXPECT_NE(o.output.find("not a positive count"), std::string::npos) << o.output;
 }

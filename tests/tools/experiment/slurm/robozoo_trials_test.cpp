@@ -1,4 +1,4 @@
-// tools/slurm/robozoo-trials.sbatch without Slurm: SLURM_ARRAY_TASK_ID set by
+// tools/experiment/slurm/robozoo-trials.sbatch without Slurm: SLURM_ARRAY_TASK_ID set by
 // hand, mpirun on this machine. Which trial each array task runs, and a real trial
 // under mpirun -np 3 that equals a local run and resumes when run again.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@ namespace {
 
 using namespace robozoo::testing;
 
-const std::string kScript = std::string(ROBOZOO_SOURCE_DIR) + "/tools/slurm/robozoo-trials.sbatch";
+const std::string kScript = std::string(ROBOZOO_SOURCE_DIR) + "/tools/experiment/slurm/robozoo-trials.sbatch";
 
 Outcome trial(const std::string& env, const std::string& args = "") {
   return run_shell("env " + env + " ROBOZOO_BIN='" + std::string(ROBOZOO_BIN_DIR) + "' timeout 300 bash " + kScript +

@@ -7,9 +7,9 @@
 # publishes a run at the default --pose-every (4); robozoo-log bus then counts
 # what the recording lacks. Prints one line per trial and a table per variant.
 #
-#   tools/bus_loss_study.sh [TRIALS]      # default 5 trials per variant
+#   tools/measure/bus_loss_study.sh [TRIALS]  # default 5 trials per variant
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 trials="${1:-5}"
 case "$trials" in -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
 [ $# -le 1 ] && [[ "$trials" =~ ^[1-9][0-9]*$ ]] || {

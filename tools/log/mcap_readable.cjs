@@ -1,6 +1,6 @@
 // An MCAP file opened for @mcap/core's indexed reader: the IReadable it wants
 // (size, and reads at any offset) over a file handle, and close(). Shared by
-// tools/mcap_frame.cjs and tests/tools/mcap_check.cjs.
+// tools/log/mcap_frame.cjs and tests/tools/log/mcap_check.cjs.
 "use strict";
 const fs = require("node:fs/promises");
 

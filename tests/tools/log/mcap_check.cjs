@@ -12,7 +12,7 @@
 const fs = require("node:fs/promises");
 const path = require("node:path");
 const { createRequire } = require("node:module");
-const { openReadable } = require("../../tools/mcap_readable.cjs");
+const { openReadable } = require("../../../tools/log/mcap_readable.cjs");
 
 const [modules, file, summaryPath] = process.argv.slice(2);
 if (!modules || !file || !summaryPath) {

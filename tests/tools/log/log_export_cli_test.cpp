@@ -1,7 +1,7 @@
 // robozoo-log export, checked with the MCAP format's own library: tiny runs of
 // every kind robozoo-evolve writes (feed-forward, recurrent, with poses, with
 // hardly any, without any, every genome published, resumed) exported with each compression
-// and read by tests/tools/mcap_check.cjs under Debian's node with @mcap/core
+// and read by tests/tools/log/mcap_check.cjs under Debian's node with @mcap/core
 // and ajv (installed by tools/npm_deps.sh into build/npm).
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -83,7 +83,7 @@ class LogExport : public ::testing::Test {
                                 "' --compression " + compression + " --chunk-kib 64");
     EXPECT_EQ(e.status, 0) << e.output;
     EXPECT_FALSE(fs::exists(out.string() + ".partial"));
-    const Outcome c = run_shell("node '" + source("tests/tools/mcap_check.cjs") + "' '" + node_modules + "' '" +
+    const Outcome c = run_shell("node '" + source("tests/tools/log/mcap_check.cjs") + "' '" + node_modules + "' '" +
                                 out.string() + "' '" + summary.string() + "'");
     EXPECT_EQ(c.status, 0) << c.output;
     return c.output;
@@ -99,8 +99,8 @@ TEST_F(LogExport, FeedForwardRunWithPosesZstd) {
 TEST_F(LogExport, FrameDrawnFromTheFileHasOneCirclePerSphere) {
   export_and_check("feedforward", "zstd");
   const fs::path mcap = work_dir() / "feedforward-zstd.mcap", svg = work_dir() / "frame.svg";
-  const Outcome o = run_shell("node '" + source("tools/mcap_frame.cjs") + "' '" + node_modules + "' '" + mcap.string() +
-                              "' '" + svg.string() + "' --index 0");
+  const Outcome o = run_shell("node '" + source("tools/log/mcap_frame.cjs") + "' '" + node_modules + "' '" +
+                              mcap.string() + "' '" + svg.string() + "' --index 0");
   ASSERT_EQ(o.status, 0) << o.output;
   const size_t at = o.output.find(" spheres");
   ASSERT_NE(at, std::string::npos) << o.output;
@@ -113,7 +113,7 @@ TEST_F(LogExport, FrameDrawnFromTheFileHasOneCirclePerSphere) {
   EXPECT_GT(spheres, 0);
   EXPECT_EQ(circles, spheres) << o.output;
   EXPECT_NE(text.find("/robot/scene #0 "), std::string::npos);
-  EXPECT_EQ(run_shell("node '" + source("tools/mcap_frame.cjs") + "' --bogus").status, 2);
+  EXPECT_EQ(run_shell("node '" + source("tools/log/mcap_frame.cjs") + "' --bogus").status, 2);
 }
 
 TEST_F(LogExport, RecurrentRunLz4) {
@@ -152,7 +152,7 @@ TEST_F(LogExport, CheckerCatchesAFlippedByte) {
     f.put(static_cast<char>(c ^ 0x01));
   }
   const fs::path summary = work_dir() / "recurrent-summary.json";
-  const Outcome c = run_shell("node '" + source("tests/tools/mcap_check.cjs") + "' '" + node_modules + "' '" +
+  const Outcome c = run_shell("node '" + source("tests/tools/log/mcap_check.cjs") + "' '" + node_modules + "' '" +
                               bad.string() + "' '" + summary.string() + "'");
   EXPECT_NE(c.status, 0) << c.output;
   EXPECT_NE(c.output.find("CRC"), std::string::npos) << c.output;

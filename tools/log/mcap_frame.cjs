@@ -3,14 +3,14 @@
 // @mcap/core, its spheres in an axonometric view over a grid on the ground,
 // the target's direction marked. For docs/foxglove.md, where Foxglove itself
 // cannot run; chromium --headless --screenshot turns the SVG into a PNG.
-//   node tools/mcap_frame.cjs NODE_MODULES FILE.mcap OUT.svg [--index N] [--topic /robot/scene]
+//   node tools/log/mcap_frame.cjs NODE_MODULES FILE.mcap OUT.svg [--index N] [--topic /robot/scene]
 "use strict";
 const fs = require("node:fs/promises");
 const path = require("node:path");
 const { createRequire } = require("node:module");
 const { openReadable } = require("./mcap_readable.cjs");
 
-const USAGE = "usage: node tools/mcap_frame.cjs NODE_MODULES FILE.mcap OUT.svg [--index N] [--topic T]\n" +
+const USAGE = "usage: node tools/log/mcap_frame.cjs NODE_MODULES FILE.mcap OUT.svg [--index N] [--topic T]\n" +
   "  draws the N-th message (default -1: the last) of topic T (default /robot/scene) as SVG";
 function usage(why) {
   console.error(`mcap_frame: ${why}\n${USAGE}`);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The paper-size experiment, grown over days with one software version, at low priority.
 #
-#   tools/paper_experiment.sh [--dir DIR] [--commit COMMIT] [--workers N]   # run (or resume) the milestones
-#   tools/paper_experiment.sh --collect [--dir DIR]                         # copy the compact results into the repository
-#   tools/paper_experiment.sh --status [--dir DIR]
+#   tools/experiment/paper_experiment.sh [--dir DIR] [--commit COMMIT] [--workers N]  # run (or resume) the milestones
+#   tools/experiment/paper_experiment.sh --collect [--dir DIR]                        # copy the compact results into the repository
+#   tools/experiment/paper_experiment.sh --status [--dir DIR]
 #
 # For a test of the script itself (the paper's sizes are the defaults):
 #   --bin BIN: robozoo-evolve and robozoo-experiment from BIN (no clone, no build, no VERSION);
@@ -31,7 +31,7 @@
 # (build/bin/robozoo-stats --same-as; exit 1 when one does not).
 # DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 repo=$(pwd)
 dir=/var/tmp/robozoo-paper
 commit=""
