@@ -7,6 +7,7 @@
 #include <sstream>
 #include <thread>
 
+#include "evolve/config/config_docs.hpp"
 #include "evolve/config/run_config.hpp"
 #include "evolve/io/bus.hpp"
 #include "evolve/run/checkpoint.hpp"
@@ -78,6 +79,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_flag("--quiet,-q", o.quiet, "no progress lines");
   app.add_flag("--print-config", o.print_config,
                "print the resolved configuration (JSON, every parameter with its value) and exit");
+  app.add_flag("--explain", o.explain,
+               "with --print-config: one line per parameter, KEY = VALUE and its meaning and unit, instead of JSON");
   app.add_flag("--mpi", o.mpi,
                "evaluate on the ranks of an MPI job: mpirun -np N robozoo-evolve --mpi ... (N >= 2; rank 0 "
                "evolves, logs and checkpoints, ranks 1..N-1 evaluate; --workers is ignored)");
@@ -142,8 +145,15 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
     if (app.count("--pose-every")) config.pose_every = o.pose_every;
     if (o.publish_all) config.publish_all = true;
     validate_config(config);
+    if (o.explain && !o.print_config) {
+      std::cerr << "robozoo-evolve: --explain only applies to --print-config\n";
+      return 2;
+    }
     if (o.print_config) {
-      std::cout << config_to_json(config).dump(2) << "\n";
+      if (o.explain)
+        std::cout << explain_config(config);
+      else
+        std::cout << config_to_json(config).dump(2) << "\n";
       return 0;
     }
     opts.run_id = o.run_id;
@@ -166,7 +176,7 @@ std::optional<int> resolve_run(const CLI::App& app, const RunOptions& o, RunConf
       // command line's, decides how the workers evaluate. Evolution resumes from
       // this same reading of it.
       opts.checkpoint = read_checkpoint(checkpoint);
-      config = config_from_json(opts.checkpoint->config);
+      config = config_from_record(opts.checkpoint->config);
       // --generations on resume moves the run's end: up only (Evolution refuses less).
       if (app.count("--generations")) {
         opts.generations = o.generations;

@@ -32,7 +32,8 @@ struct RunOptions {
   double job_timeout = 600.0;
   bool quiet = false;
   bool print_config = false;
-  bool mpi = false;  // evaluate on the ranks of an MPI job (mpirun); --workers is then ignored
+  bool explain = false;  ///< with print_config: every key with its meaning, not JSON
+  bool mpi = false;      // evaluate on the ranks of an MPI job (mpirun); --workers is then ignored
 };
 
 void add_run_options(CLI::App& app, RunOptions& o);

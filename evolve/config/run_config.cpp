@@ -46,6 +46,8 @@ FieldTable<NeatParams> neat_table() {
       .choice("initial_links", &NeatParams::initial_links, initial_links_name, initial_links_from_name)
       .choice("add_link", &NeatParams::add_link, add_link_rule_name, add_link_rule_from_name)
       .choice("add_node", &NeatParams::add_node, add_node_rule_name, add_node_rule_from_name)
+      .choice("add_node_innovations", &NeatParams::add_node_innovations, add_node_innovations_name,
+              add_node_innovations_from_name)
       .choice("compatibility", &NeatParams::compatibility, compatibility_rule_name, compatibility_rule_from_name)
       .real("disabled_gene_probability", &NeatParams::disabled_gene_probability, 0, 1)
       .choice("weight_mutation", &NeatParams::weight_mutation, weight_mutation_rule_name,
@@ -131,6 +133,7 @@ FieldTable<GrowthParams> growth_table() {
       .real("tau_max", &GrowthParams::tau_max, 0, kInf, true)
       .real("bias_max", &GrowthParams::bias_max, 0, kInf)
       .real("weight_max", &GrowthParams::weight_max, 0, kInf)
+      .choice("weight_mapping", &GrowthParams::weight_mapping, weight_mapping_name, weight_mapping_from_name)
       .real("bias_input", &GrowthParams::bias_input, -kInf, kInf)
       .integer("cloud_points", &GrowthParams::cloud_points, 1, 100000)
       .real("cloud_step", &GrowthParams::cloud_step, 0, 2 * M_PI, true)
@@ -264,6 +267,17 @@ RunConfig config_from_json(const nlohmann::json& j, RunConfig base) {
   top_table().read(base, j);
   validate_config(base);
   return base;
+}
+
+RunConfig config_from_record(const nlohmann::json& j) {
+  RunConfig base;
+  const auto has = [&j](const char* section, const char* key) {
+    return j.is_object() && j.contains(section) && j.at(section).is_object() && j.at(section).contains(key);
+  };
+  if (!has("growth", "bias_input")) base.eval.growth.bias_input = 1.0;
+  if (!has("growth", "weight_mapping")) base.eval.growth.weight_mapping = WeightMapping::Proportional;
+  if (!has("neat", "add_node_innovations")) base.neat.add_node_innovations = AddNodeInnovations::Shared;
+  return config_from_json(j, base);
 }
 
 void validate_config(const RunConfig& c) {

@@ -32,6 +32,12 @@ nlohmann::json config_to_json(const RunConfig& c);
 /// Overlays `j` onto `base`. Unknown keys, wrong types and out-of-range values
 /// throw ConfigError naming the key (e.g. "neat.population: must be >= 2, got -5").
 RunConfig config_from_json(const nlohmann::json& j, RunConfig base = RunConfig{});
+/// A configuration robozoo recorded (a log's run message, a checkpoint, a compact
+/// result, a worker's setup): config_from_json onto the defaults, except that a key
+/// added after such records were first written, when absent, means the behaviour
+/// the record ran with: growth.bias_input 1.0, growth.weight_mapping proportional,
+/// neat.add_node_innovations shared. Throws ConfigError as config_from_json does.
+RunConfig config_from_record(const nlohmann::json& j);
 /// Reads a JSON (.json) or TOML (.toml) file and overlays it onto `base`.
 /// Throws ConfigError for an unreadable or malformed file, naming the file.
 RunConfig load_config_file(const std::string& path, RunConfig base = RunConfig{});

@@ -5,6 +5,14 @@
 
 namespace robozoo {
 
+std::string weight_mapping_name(WeightMapping m) { return m == WeightMapping::Rescaled ? "rescaled" : "proportional"; }
+
+WeightMapping weight_mapping_from_name(const std::string& s) {
+  if (s == "rescaled") return WeightMapping::Rescaled;
+  if (s == "proportional") return WeightMapping::Proportional;
+  throw std::invalid_argument("unknown weight mapping '" + s + "' (use rescaled, proportional)");
+}
+
 void validate_growth_params(const GrowthParams& p) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("growth parameters: " + what); };
   const double reals[] = {
@@ -20,6 +28,9 @@ void validate_growth_params(const GrowthParams& p) {
   if (!(p.t_matter < 1)) fail("t_matter must be below 1");
   if (!(p.t_joint < 1)) fail("t_joint must be below 1");
   if (!(p.weight_threshold >= 0)) fail("weight_threshold must not be negative");
+  // The rescaled mapping divides by 1 - weight_threshold.
+  if (p.weight_mapping == WeightMapping::Rescaled && !(p.weight_threshold < 1))
+    fail("weight_threshold must be below 1 with the rescaled weight mapping");
   if (!(p.rho_min > 0 && p.rho_min <= p.rho_max)) fail("need 0 < rho_min <= rho_max");
   if (!(p.max_joint_range >= 0)) fail("max_joint_range must not be negative");
   if (!(p.tau_min > 0 && p.tau_min <= p.tau_max)) fail("need 0 < tau_min <= tau_max");

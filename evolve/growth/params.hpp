@@ -2,8 +2,21 @@
 // Parameters of growing a robot from a CPPN (paper 2.3, docs/method.md section 2).
 // Lengths in ODE length units (m), angles in rad.
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 namespace robozoo {
+
+/// How a CPPN weight output w beyond weight_threshold T becomes a CTRNN weight.
+enum class WeightMapping : int8_t {
+  /// HyperNEAT's substrate code (its experiments' populateSubstrate / convertOutputToWeight):
+  /// sign(w) (|w| - T) / (1 - T) weight_max, so weights start at 0 at the threshold
+  Rescaled = 0,
+  /// robozoo's earlier mapping: w weight_max, which jumps from 0 to T weight_max at the threshold
+  Proportional = 1,
+};
+std::string weight_mapping_name(WeightMapping m);              ///< "rescaled" / "proportional"
+WeightMapping weight_mapping_from_name(const std::string& s);  ///< throws std::invalid_argument listing the names
 
 struct GrowthParams {
   double r_init = 0.1;                ///< root radius (m)
@@ -20,10 +33,14 @@ struct GrowthParams {
   double tau_max = 1.0;               ///< motor neuron time constant at tau = +1 (s)
   double bias_max = 3.0;              ///< motor neuron bias at omega = 1 (dimensionless)
   double weight_max = 3.0;            ///< CTRNN weight at w = 1 (dimensionless)
-  double bias_input = 1.0;            ///< value of the CPPN's bias input
-  int cloud_points = 629;             ///< points per cloud (count), at angles k * cloud_step
-  double cloud_step = 0.01;           ///< angle between cloud points (rad)
-  double bound = 2.0;                 ///< sphere centres must have |x|, |y| <= bound (m)
+  /// How an expressed weight output becomes a CTRNN weight (HyperNEAT's rescaling by default).
+  WeightMapping weight_mapping = WeightMapping::Rescaled;
+  /// Value of the CPPN's constant bias input (dimensionless): 0.3, the value HyperNEAT's
+  /// experiments and the first author's CPPN growth code feed (docs/method.md section 2.1).
+  double bias_input = 0.3;
+  int cloud_points = 629;    ///< points per cloud (count), at angles k * cloud_step
+  double cloud_step = 0.01;  ///< angle between cloud points (rad)
+  double bound = 2.0;        ///< sphere centres must have |x|, |y| <= bound (m)
   /// Growth stops at this many spheres (count). The paper sets no cap; it binds for about
   /// half the robots that grow at all, at 50, 100 or 200 alike, so the counts of a robot at
   /// the cap are censored (docs/method.md section 2.3 step 4, docs/performance.md).

@@ -28,6 +28,9 @@ std::string initial_links_name(InitialLinks r) {
 }
 std::string add_link_rule_name(AddLinkRule r) { return r == AddLinkRule::Uniform ? "uniform" : "tries"; }
 std::string add_node_rule_name(AddNodeRule r) { return r == AddNodeRule::HyperNeat ? "hyperneat" : "classic"; }
+std::string add_node_innovations_name(AddNodeInnovations r) {
+  return r == AddNodeInnovations::Fresh ? "fresh" : "shared";
+}
 std::string compatibility_rule_name(CompatibilityRule r) {
   return r == CompatibilityRule::HyperNeat ? "hyperneat" : "classic";
 }
@@ -84,6 +87,10 @@ AddLinkRule add_link_rule_from_name(const std::string& s) {
 }
 AddNodeRule add_node_rule_from_name(const std::string& s) {
   return from_name(s, {AddNodeRule::HyperNeat, AddNodeRule::Classic}, add_node_rule_name, "add-node rule");
+}
+AddNodeInnovations add_node_innovations_from_name(const std::string& s) {
+  return from_name(s, {AddNodeInnovations::Fresh, AddNodeInnovations::Shared}, add_node_innovations_name,
+                   "add-node innovations");
 }
 CompatibilityRule compatibility_rule_from_name(const std::string& s) {
   return from_name(s, {CompatibilityRule::HyperNeat, CompatibilityRule::Classic}, compatibility_rule_name,

@@ -35,6 +35,16 @@ enum class AddNodeRule : int8_t {
   HyperNeat = 0,  ///< forward links only; the old link stays enabled at w/2, in-link 1, out-link w/4
   Classic = 1,    ///< any enabled link; the old link is disabled, in-link 1, out-link w
 };
+/// Which numbers add-node gives the node and links of a split.
+enum class AddNodeInnovations : int8_t {
+  /// HyperNEAT (Globals::assignNodeID, assignLinkID): every split gets a new node id, so its two
+  /// links are new (from, to) pairs with new innovation numbers, even when another genome of
+  /// the same generation split the same link
+  Fresh = 0,
+  /// NEAT's innovation list (robozoo's earlier rule): the same link split by several genomes of
+  /// one generation gets the same node id, innovations and activation
+  Shared = 1,
+};
 /// Which link weights a weight mutation changes.
 enum class WeightMutationRule : int8_t {
   HyperNeat = 0,  ///< links younger than young_link_age always perturbed, older ones with old_link_perturb_probability
@@ -99,7 +109,7 @@ enum class CrossoverGenes : int8_t {
   /// HyperNEAT's GeneticIndividual crossover (MisterTea/HyperNEAT): every gene of either parent;
   /// a matching gene from parent a with probability fitness_a / (fitness_a + fitness_b).
   Both = 1,
-  /// The paper's own HyperNEAT (jauerb/CPPN_Trimesh): one draw per gene of either parent, parent
+  /// HyperNEAT as the first author's later copy of it has it (jauerb/CPPN_Trimesh): one draw per gene of either parent, parent
   /// a with probability fitness_a / (fitness_a + fitness_b); a matching gene comes from the
   /// drawn parent, a gene only one parent has is kept when that parent is drawn.
   Drawn = 2,
@@ -145,6 +155,7 @@ std::string link_rule_name(LinkRule r);          ///< "positions" / "cycle_test"
 std::string initial_links_name(InitialLinks r);  ///< "all_allowed" / "inputs_to_outputs" / "all_allowed_recurrent_zero"
 std::string add_link_rule_name(AddLinkRule r);   ///< "uniform" / "tries"
 std::string add_node_rule_name(AddNodeRule r);   ///< "hyperneat" / "classic"
+std::string add_node_innovations_name(AddNodeInnovations r);  ///< "fresh" / "shared"
 std::string compatibility_rule_name(CompatibilityRule r);     ///< "hyperneat" / "classic"
 std::string weight_mutation_rule_name(WeightMutationRule r);  ///< "hyperneat" / "classic" / "stanley"
 std::string crossover_rule_name(CrossoverRule r);             ///< "robozoo" / "stanley"
@@ -160,6 +171,7 @@ LinkRule link_rule_from_name(const std::string& s);
 InitialLinks initial_links_from_name(const std::string& s);
 AddLinkRule add_link_rule_from_name(const std::string& s);
 AddNodeRule add_node_rule_from_name(const std::string& s);
+AddNodeInnovations add_node_innovations_from_name(const std::string& s);
 CompatibilityRule compatibility_rule_from_name(const std::string& s);
 WeightMutationRule weight_mutation_rule_from_name(const std::string& s);
 CrossoverRule crossover_rule_from_name(const std::string& s);
@@ -200,9 +212,12 @@ struct NeatParams {
   int add_link_tries = 20;                   ///< attempts to find a new, legal link with add_link "tries" (count)
   LinkRule link_rule = LinkRule::Positions;  ///< which links the feed-forward regime allows
   bool self_loops = false;                   ///< recurrent regime: links from a node to itself allowed
-  InitialLinks initial_links = InitialLinks::AllAllowed;               ///< generation-0 topology
-  AddLinkRule add_link = AddLinkRule::Uniform;                         ///< how add-link chooses
-  AddNodeRule add_node = AddNodeRule::HyperNeat;                       ///< how add-node splits
+  InitialLinks initial_links = InitialLinks::AllAllowed;  ///< generation-0 topology
+  AddLinkRule add_link = AddLinkRule::Uniform;            ///< how add-link chooses
+  AddNodeRule add_node = AddNodeRule::HyperNeat;          ///< how add-node splits
+  /// Which numbers a split gets (HyperNEAT's fresh ones by default). Not part of neat.mechanics:
+  /// a recorded configuration without this key ran with shared numbers.
+  AddNodeInnovations add_node_innovations = AddNodeInnovations::Fresh;
   CompatibilityRule compatibility = CompatibilityRule::HyperNeat;      ///< how unmatched genes count
   WeightMutationRule weight_mutation = WeightMutationRule::HyperNeat;  ///< which weights a weight mutation changes
   /// Classic weight mutation: a link's weight is replaced by a new value uniform in
@@ -260,7 +275,7 @@ struct NeatParams {
   bool childless_species_stay = true;
 
   // HyperNEAT's own mechanics (NEAT_GeneticIndividual, NEAT_GeneticSpecies, NEAT_GeneticPopulation;
-  // the paper's copy in jauerb/CPPN_Trimesh where the two differ). The defaults, here and in
+  // the first author's later copy in jauerb/CPPN_Trimesh, his 2012-14 triangle-mesh code and not the paper's, where the two differ). The defaults, here and in
   // interspecies_mating_probability, stagnation, offspring_rounding and childless_species_stay
   // above, are HyperNEAT's (apply_neat_mechanics(p, NeatMechanics::HyperNeat));
   // NeatMechanics::Robozoo restores robozoo's earlier ones.

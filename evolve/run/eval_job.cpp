@@ -88,7 +88,7 @@ std::vector<uint8_t> run_eval_job(const std::vector<uint8_t>& job, const EvalPar
 }
 
 std::function<std::vector<uint8_t>(const std::vector<uint8_t>&)> eval_work_from_setup(const std::string& setup) {
-  const RunConfig config = config_from_json(nlohmann::json::parse(setup));
+  const RunConfig config = config_from_record(nlohmann::json::parse(setup));
   return [eval = config.eval](const std::vector<uint8_t>& job) { return run_eval_job(job, eval); };
 }
 

@@ -99,7 +99,7 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     options_.checkpoint.reset();
     RunConfig saved;
     try {
-      saved = config_from_json(c.config);
+      saved = config_from_record(c.config);
     } catch (const ConfigError& e) {
       throw std::runtime_error(checkpoint_path_ + ": its configuration is invalid: " + e.what());
     }

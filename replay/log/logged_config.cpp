@@ -41,7 +41,7 @@ RunConfig config_from_run_message(const run_t& m) {
                                 "'; replay takes no value from its own defaults");
   RunConfig c;
   try {
-    c = config_from_json(j);
+    c = config_from_record(j);
   } catch (const ConfigError& e) {
     throw std::invalid_argument(run + "its configuration is invalid: " + e.what());
   }

@@ -67,6 +67,19 @@ void validate_experiment(const ExperimentParams& p) {
   need(!p.arms.empty(), "--arms: the experiment needs at least one arm");
   for (size_t i = 0; i < p.arms.size(); ++i)
     for (size_t j = 0; j < i; ++j) need(p.arms[i] != p.arms[j], "--arms: " + arm_name(p.arms[i]) + " is given twice");
+  for (const auto& kv : p.sets) {
+    nlohmann::json j;
+    try {
+      j = config_assignment(kv);
+      config_from_json(j);
+    } catch (const ConfigError& e) {
+      throw std::invalid_argument(std::string("--set ") + kv + ": " + e.what());
+    }
+    const std::string key = kv.substr(0, kv.find('='));
+    for (const char* own :
+         {"regime", "seed", "generations", "neat", "neat.population", "neat.initial_links", "sim", "sim.steps"})
+      need(key != own, "--set " + kv + ": " + key + " is the experiment's own (use its option, or its arms)");
+  }
 }
 
 std::vector<Trial> plan_trials(const ExperimentParams& p) {
@@ -105,6 +118,7 @@ std::vector<std::string> evolve_arguments(const Trial& t, const ExperimentParams
                                 t.name()};
   if (arm_initial_links(t.arm) != NeatParams{}.initial_links)
     a.insert(a.end(), {"--set", "neat.initial_links=" + initial_links_name(arm_initial_links(t.arm))});
+  for (const auto& kv : p.sets) a.insert(a.end(), {"--set", kv});
   if (p.steps > 0) a.insert(a.end(), {"--steps", std::to_string(p.steps)});
   if (p.workers > 0) a.insert(a.end(), {"--workers", std::to_string(p.workers)});
   if (resume) a.push_back("--resume");

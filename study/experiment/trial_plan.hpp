@@ -54,6 +54,11 @@ struct ExperimentParams {
   int mpi_ranks = 0;  ///< ranks of each trial's MPI job (count, >= 2); 0: local worker processes
   std::vector<std::string> mpirun = {"mpirun"};  ///< the MPI launcher and its own options, before -np
   std::string out_dir;                           ///< folder of the trials' logs
+  /// Configuration changes for every trial, "KEY=VALUE" as robozoo-evolve --set takes them
+  /// (e.g. growth.bias_input=1.0 for one factor of a sensitivity study); none by default.
+  /// Keys the experiment sets itself (regime, seed, generations, neat.population,
+  /// neat.initial_links, sim.steps) are refused.
+  std::vector<std::string> sets;
 };
 
 struct Trial {
@@ -66,7 +71,9 @@ struct Trial {
   std::string name() const;  ///< "<arm>-s<seed>", also the run id
 };
 
-/// Throws std::invalid_argument naming the parameter when one is out of range.
+/// Throws std::invalid_argument naming the parameter when one is out of range, or
+/// naming the --set assignment that is malformed, invalid or sets a key of the
+/// experiment's own.
 void validate_experiment(const ExperimentParams& p);
 
 /// The trials in the order they run: trial 1 of every arm, then trial 2, ...,

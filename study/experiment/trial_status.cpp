@@ -1,5 +1,6 @@
 #include "study/experiment/trial_status.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 
@@ -14,10 +15,36 @@ int32_t generations_done(const Checkpoint& c) {
   return c.population.generation;
 }
 
+std::string sets_mismatch(const nlohmann::json& config, const std::vector<std::string>& sets) {
+  std::string why;
+  nlohmann::json recorded;
+  try {
+    recorded = config_to_json(config_from_record(config));
+  } catch (const std::exception& e) {
+    return std::string("its configuration is invalid: ") + e.what();
+  }
+  for (const auto& kv : sets) {
+    const nlohmann::json want = config_to_json(config_from_json(config_assignment(kv)));
+    const std::string key = kv.substr(0, kv.find('='));
+    std::string pointer;
+    for (size_t start = 0; start <= key.size();) {
+      const size_t dot = std::min(key.find('.', start), key.size());
+      pointer += "/" + key.substr(start, dot - start);
+      start = dot + 1;
+    }
+    const nlohmann::json::json_pointer at(pointer);
+    const nlohmann::json was = recorded.contains(at) ? recorded.at(at) : nlohmann::json();
+    if (was == want.at(at)) continue;
+    if (!why.empty()) why += ", ";
+    why += key + " " + was.dump() + ", not " + want.at(at).dump();
+  }
+  return why;
+}
+
 std::string trial_mismatch(const Checkpoint& c, const Trial& t, const ExperimentParams& p) {
   RunConfig saved;
   try {
-    saved = config_from_json(c.config);
+    saved = config_from_record(c.config);
   } catch (const std::exception& e) {
     return std::string("its configuration is invalid: ") + e.what();
   }
@@ -34,6 +61,8 @@ std::string trial_mismatch(const Checkpoint& c, const Trial& t, const Experiment
   differ("population", std::to_string(saved.neat.population), std::to_string(p.population));
   const int steps = p.steps > 0 ? p.steps : RunConfig{}.eval.sim.steps;
   differ("steps", std::to_string(saved.eval.sim.steps), std::to_string(steps));
+  const std::string sets = sets_mismatch(c.config, p.sets);
+  if (!sets.empty()) why += (why.empty() ? "" : ", ") + sets;
   return why.empty() ? why : "it was started with " + why;
 }
 

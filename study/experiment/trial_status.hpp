@@ -4,6 +4,9 @@
 // part way (resumable), or finished.
 #include <cstdint>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "study/experiment/trial_plan.hpp"
 #include "evolve/run/checkpoint.hpp"
@@ -30,9 +33,15 @@ TrialStatus trial_status(const Trial& t, const ExperimentParams& p);
 
 /// Empty when the checkpoint `c` was written for trial `t` of experiment `p`
 /// (regime, seed, start topology, population, steps: robozoo-evolve's default
-/// when p.steps is 0; not generations, which an experiment may raise); otherwise
+/// when p.steps is 0; every key of p.sets; not generations, which an experiment
+/// may raise); otherwise
 /// what differs, e.g. "it was started with population 60, not 150".
 std::string trial_mismatch(const Checkpoint& c, const Trial& t, const ExperimentParams& p);
+
+/// Empty when the recorded configuration `config` (a checkpoint's or a compact
+/// result's) holds the value every one of `sets` ("KEY=VALUE", ExperimentParams::sets)
+/// gives its key; otherwise what differs, e.g. "growth.bias_input 0.3, not 1.0".
+std::string sets_mismatch(const nlohmann::json& config, const std::vector<std::string>& sets);
 
 /// Finished generations recorded in a checkpoint.
 int32_t generations_done(const Checkpoint& c);

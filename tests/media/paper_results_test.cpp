@@ -1,11 +1,12 @@
 // The committed paper-size experiment (media/experiment/paper): every compact
-// result is a finished trial of the plan, made by the one pinned software version;
+// result is a finished trial of its milestone's plan, made by the milestone's pinned
+// software version with the milestone's configuration;
 // robozoo-stats, run as each committed report's own reproduce command says (a milestone's
 // report, and the full comparison of each other arm with the control beside it), gives
 // that report, its tables and its plot scripts byte for byte (the PNGs exist; their
 // bytes depend on gnuplot's and cairo's builds); and a later milestone's results
-// repeat the earlier milestone's generations field for field (runs are
-// deterministic, even when a trial ran again from generation 0 on another machine).
+// repeat the milestone's they continue field for field (runs are deterministic, even
+// when a trial ran again from generation 0 on another machine).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,15 +31,48 @@ namespace fs = std::filesystem;
 const std::string kPaper = "media/experiment/paper";
 
 struct Milestone {
-  std::string folder;  ///< relative to the repository
-  int generations;     ///< the milestone's end
+  std::string folder;      ///< relative to the repository
+  int generations;         ///< the milestone's end
+  std::string version;     ///< the file (under kPaper) that names its software version
+  int trials = 30;         ///< trials per arm (count)
+  bool four_arms = false;  ///< also recurrent-sparse and recurrent-zero
+  std::string continues;   ///< the folder of the milestone whose trials it continues ("" for none)
+  /// Configuration values every result must hold (JSON pointer -> value).
+  std::map<std::string, nlohmann::json> config;
 };
+
+/// Every milestone of tools/experiment/paper_experiment.sh, in order.
+std::vector<Milestone> all_milestones() {
+  const std::map<std::string, nlohmann::json> m3 = {
+      {"/growth/bias_input", 0.3}, {"/growth/weight_mapping", "rescaled"}, {"/neat/add_node_innovations", "fresh"}};
+  std::vector<Milestone> out = {
+      {kPaper, 30, "VERSION", 30, true, "", {{"/growth/bias_input", 1.0}}},
+      {kPaper + "/m2", 60, "VERSION", 30, false, kPaper, {{"/growth/bias_input", 1.0}}},
+      {kPaper + "/m3", 60, "m3/VERSION", 30, false, "", m3},
+  };
+  const std::map<std::string, std::pair<std::string, nlohmann::json>> factors = {
+      {"bias-1.0", {"/growth/bias_input", 1.0}},
+      {"proportional-weights", {"/growth/weight_mapping", "proportional"}},
+      {"shared-add-node", {"/neat/add_node_innovations", "shared"}},
+      {"no-contact-rule", {"/sim/rolling_contact_rule", false}},
+      {"cap-100", {"/growth/max_spheres", 100}}};
+  for (const auto& [name, change] : factors) {
+    std::map<std::string, nlohmann::json> config = m3;
+    config[change.first] = change.second;
+    config["/sim/rolling_spin_rule"] = true;
+    out.push_back({kPaper + "/sensitivity/" + name, 30, "m3/VERSION", 10, false, "", config});
+  }
+  out.push_back({kPaper + "/m3/g100", 100, "m3/VERSION", 30, false, kPaper + "/m3", m3});
+  out.push_back({kPaper + "/m3/g150", 150, "m3/VERSION", 30, false, kPaper + "/m3/g100", m3});
+  out.push_back({kPaper + "/m3/g500", 500, "m3/VERSION", 30, false, kPaper + "/m3/g150", m3});
+  return out;
+}
 
 /// The milestones whose results are committed, in order.
 std::vector<Milestone> committed_milestones() {
   std::vector<Milestone> out;
   const std::string root = ROBOZOO_SOURCE_DIR;
-  for (const Milestone& m : {Milestone{kPaper, 30}, Milestone{kPaper + "/m2", 60}, Milestone{kPaper + "/m3", 500}})
+  for (const Milestone& m : all_milestones())
     if (fs::is_directory(root + "/" + m.folder + "/results")) out.push_back(m);
   return out;
 }
@@ -54,13 +88,13 @@ std::vector<std::string> result_files(const std::string& folder) {
 TEST(PaperResults, EveryCommittedResultIsAFinishedTrialOfThePlanMadeByThePinnedVersion) {
   const auto milestones = committed_milestones();
   ASSERT_FALSE(milestones.empty()) << "no " << kPaper << "/results";
-  std::string version = read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + kPaper + "/VERSION");
-  version = version.substr(0, version.find_first_of("\n "));
-  ASSERT_GE(version.size(), 12u) << "VERSION: " << version;
   const std::map<std::string, int> arm_index = {
       {"feedforward", 0}, {"recurrent", 1}, {"recurrent-sparse", 2}, {"recurrent-zero", 3}};
   const std::regex name_rule("([a-z-]+)-s([0-9]+)\\.results\\.json");
   for (const Milestone& m : milestones) {
+    std::string version = read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + kPaper + "/" + m.version);
+    version = version.substr(0, version.find_first_of("\n "));
+    ASSERT_GE(version.size(), 12u) << m.version << ": " << version;
     std::map<std::string, int> per_arm;
     for (const auto& f : result_files(m.folder)) {
       SCOPED_TRACE(m.folder + "/results/" + f);
@@ -69,9 +103,9 @@ TEST(PaperResults, EveryCommittedResultIsAFinishedTrialOfThePlanMadeByThePinnedV
       const std::string arm = match[1];
       const long seed = std::stol(match[2]);
       ASSERT_TRUE(arm_index.count(arm));
-      // Trial k of arm a has seed 4(k - 1) + a + 1 (docs/experiment.md), k from 1 to 30.
+      // Trial k of arm a has seed 4(k - 1) + a + 1 (docs/experiment.md), k from 1 to the milestone's trials.
       EXPECT_EQ((seed - 1) % 4, arm_index.at(arm));
-      EXPECT_LE((seed - 1) / 4 + 1, 30);
+      EXPECT_LE((seed - 1) / 4 + 1, m.trials);
       ++per_arm[arm];
       const nlohmann::json j =
           nlohmann::json::parse(read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + m.folder + "/results/" + f));
@@ -85,9 +119,14 @@ TEST(PaperResults, EveryCommittedResultIsAFinishedTrialOfThePlanMadeByThePinnedV
       EXPECT_EQ(j.at("generations").at("generation").size(), static_cast<size_t>(m.generations));  // finished
       EXPECT_FALSE(j.at("truncated").get<bool>());
       EXPECT_EQ(j.at("undecodable").get<int>(), 0);
+      for (const auto& [pointer, value] : m.config) {
+        const nlohmann::json::json_pointer at(pointer);
+        ASSERT_TRUE(run.at("config").contains(at)) << pointer;
+        EXPECT_EQ(run.at("config").at(at), value) << pointer;
+      }
     }
-    for (const auto& [arm, n] : per_arm) EXPECT_LE(n, 30) << m.folder << " " << arm;
-    if (m.folder != kPaper) {  // later milestones extend feedforward and recurrent only
+    for (const auto& [arm, n] : per_arm) EXPECT_LE(n, m.trials) << m.folder << " " << arm;
+    if (!m.four_arms) {  // only M1 has the recurrent-sparse and recurrent-zero arms
       EXPECT_EQ(per_arm.count("recurrent-sparse") + per_arm.count("recurrent-zero"), 0u) << m.folder;
     }
   }
@@ -153,10 +192,16 @@ TEST(PaperResults, RobozooStatsReproducesEachCommittedReportByteForByte) {
     EXPECT_GE(compared, 10u);
   }
   // A milestone with no report yet (it is running): the command that will make it works on
-  // what is there.
+  // what is there, once each of its two arms has two runs (a t-test needs them).
   for (const Milestone& m : committed_milestones()) {
     if (std::find(reports.begin(), reports.end(), m.folder) != reports.end()) continue;
     SCOPED_TRACE(m.folder);
+    const auto files = result_files(m.folder);
+    auto runs_of = [&files](const std::string& arm) {
+      return std::count_if(files.begin(), files.end(),
+                           [&arm](const std::string& f) { return f.rfind(arm + "-s", 0) == 0; });
+    };
+    if (runs_of("feedforward") < 2 || runs_of("recurrent") < 2) continue;
     TempDir t;
     copy_results(t);
     const std::string command = bin("robozoo-stats") + " " + m.folder + "/results --out " + m.folder;
@@ -166,10 +211,12 @@ TEST(PaperResults, RobozooStatsReproducesEachCommittedReportByteForByte) {
   }
 }
 
-TEST(PaperResults, LaterMilestonesRepeatTheEarlierMilestonesGenerations) {
+TEST(PaperResults, ContinuedMilestonesRepeatTheGenerationsOfTheOnesTheyContinue) {
   const auto milestones = committed_milestones();
-  for (size_t k = 1; k < milestones.size(); ++k) {
-    const std::string later = milestones[k].folder + "/results", earlier = milestones[k - 1].folder + "/results";
+  for (const Milestone& m : milestones) {
+    if (m.continues.empty() || !fs::is_directory(std::string(ROBOZOO_SOURCE_DIR) + "/" + m.continues + "/results"))
+      continue;
+    const std::string later = m.folder + "/results", earlier = m.continues + "/results";
     const Outcome same = run_shell("cd '" + std::string(ROBOZOO_SOURCE_DIR) + "' && " + bin("robozoo-stats") + " " +
                                    later + " --same-as " + earlier);
     EXPECT_EQ(same.status, 0) << same.output;

@@ -17,7 +17,8 @@ const std::string& evolve_log() {
   static const std::string path = [] {
     const std::string p = dir / "run.lcmlog";
     const auto o = run_shell(bin("robozoo-evolve") + " --log '" + p +
-                             "' --workers 2 --seed 7 --population 24 --generations 4 --steps 400 --quiet");
+                             "' --workers 2 --seed 7 --population 24 --generations 4 --steps 400 --quiet "
+                             "--set growth.bias_input=1.0");  // M1/M2's bias input: feed-forward robots grow
     if (o.status != 0) throw std::runtime_error("robozoo-evolve failed: " + o.output);
     return p;
   }();

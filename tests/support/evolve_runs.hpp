@@ -8,13 +8,17 @@
 
 namespace robozoo::testing {
 
+// The runs below are feed-forward (the default regime) with a bias input of 1.0, M1 and
+// M2's: at the default 0.3 no feed-forward CPPN grows beyond the root before mutation
+// (docs/method.md section 2.1), and these runs must send robots to the simulator.
 // A small run that still sends robots to the simulator: 4 generations of 24.
-inline const std::vector<std::string> kSmall = {"--seed", "7",       "--population", "24",     "--generations",
-                                                "4",      "--steps", "400",          "--quiet"};
+inline const std::vector<std::string> kSmall = {"--seed",  "7",   "--population", "24",    "--generations",        "4",
+                                                "--steps", "400", "--quiet",      "--set", "growth.bias_input=1.0"};
 
 // A run long enough (about 1.5 s on 2 cores) to be interrupted at several moments.
-inline const std::vector<std::string> kLonger = {"--seed", "7",       "--population", "40",     "--generations",
-                                                 "8",      "--steps", "1000",         "--quiet"};
+inline const std::vector<std::string> kLonger = {
+    "--seed",  "7",    "--population", "40",    "--generations",        "8",
+    "--steps", "1000", "--quiet",      "--set", "growth.bias_input=1.0"};
 
 inline std::vector<std::string> evolve_args(const std::string& log, int workers, std::vector<std::string> extra = {},
                                             const std::vector<std::string>& size = kSmall) {

@@ -16,6 +16,9 @@ inline RunConfig small_run_config(int generations = 4) {
   c.neat.population = 24;
   c.generations = generations;
   c.eval.sim.steps = 400;
+  // M1 and M2's bias input: at the default 0.3 a feed-forward run grows no robot beyond the
+  // root before mutation (docs/method.md section 2.1); these runs must reach the simulator.
+  c.eval.growth.bias_input = 1.0;
   return c;
 }
 

@@ -1,84 +1,120 @@
 #!/usr/bin/env bash
-# The paper-size experiment, grown over days with one software version, at low priority.
+# The paper-size experiment, grown over days with pinned software versions, at low priority.
 #
-#   tools/experiment/paper_experiment.sh [--dir DIR] [--commit COMMIT] [--workers N]  # run (or resume) the milestones
-#   tools/experiment/paper_experiment.sh --collect [--dir DIR]                        # copy the compact results into the repository
+#   tools/experiment/paper_experiment.sh [--dir DIR] [--workers N]  # run (or resume) the milestones
+#   tools/experiment/paper_experiment.sh --collect [--dir DIR]      # copy the compact results into the repository
 #   tools/experiment/paper_experiment.sh --status [--dir DIR]
 #
 # For a test of the script itself (the paper's sizes are the defaults):
 #   --bin BIN: robozoo-evolve and robozoo-experiment from BIN (no clone, no build, no VERSION);
 #   --paper FOLDER: the committed results' folder (default media/experiment/paper);
-#   --trials N, --population N, --steps N, --generations G1,G2,G3 (the milestones').
+#   --trials N (M1-M3), --sensitivity-trials N, --population N, --steps N,
+#   --generations G1,G2,G3,GS,G4,G5,G6 (M1, M2, M3, the sensitivity study, M3's extensions).
 #
-# It clones this repository at COMMIT (default: the one recorded in
-# media/experiment/paper/VERSION, which the first start writes) into DIR/src, builds
-# robozoo-evolve and robozoo-experiment there once, and runs robozoo-experiment under
-# nice 19 in a session of its own whose autogroup is at nice 19 too (with the kernel's
-# autogroup scheduling, nice ranks a process only within its session), with logs in
-# DIR/runs, milestone after milestone: M1 the four arms (feedforward, recurrent,
-# recurrent-sparse, recurrent-zero), 30 trials each, to generation 30; M2 feedforward
-# and recurrent to generation 60; M3 feedforward and recurrent to generation 500.
-# Population 150 and 2,500 steps throughout. Each milestone keeps its own compact
-# results (M1 in DIR/results, M2 in DIR/m2/results, M3 in DIR/m3/results, as in
-# media/experiment/paper/), so a later milestone never replaces the results an earlier
-# report was made from; a milestone that finished on this machine (DIR/M1.done, ...) is
-# not run again. Stop it at any time (kill, or the machine stops); the same command
-# resumes where it stood: trials a milestone finished elsewhere count from their
-# committed compact results, the others start again from generation 0 where their
-# logs and checkpoints are not here.
+# The milestones, in order, population 150 and 2,500 steps throughout
+# (docs/experiment.md):
+#   M1  the four arms (feedforward, recurrent, recurrent-sparse, recurrent-zero), 30 trials
+#       each, to generation 30                                      results in results/
+#   M2  feedforward and recurrent continued to generation 60        m2/results/
+#   M3  feedforward and recurrent, 30 trials each, to generation 60, with the authors' own
+#       settings (bias input 0.3, HyperNEAT's weight mapping, fresh add-node numbers)
+#                                                                    m3/results/
+#   S-<factor>  the sensitivity study: one factor at a time changed from M3's configuration,
+#       the first 10 trials of each arm (M3's seeds), to generation 30
+#                                                                    sensitivity/<factor>/results/
+#       bias-1.0 (growth.bias_input=1.0), proportional-weights (growth.weight_mapping=
+#       proportional), shared-add-node (neat.add_node_innovations=shared), no-contact-rule
+#       (sim.rolling_contact_rule=false), cap-100 (growth.max_spheres=100)
+#   M3-100, M3-150, M3-500  M3's trials continued to generations 100, 150 and 500
+#                                                                    m3/g100/results/, ...
+# M1 and M2 ran the version in media/experiment/paper/VERSION; M3, the sensitivity study and
+# M3's extensions the one in media/experiment/paper/m3/VERSION, which their first start
+# writes (this checkout's commit). Each version is cloned from this repository into
+# DIR/src-<commit> and its robozoo-evolve and robozoo-experiment built there once; every
+# trial runs under nice 19 in a session of its own whose autogroup is at nice 19 too (with
+# the kernel's autogroup scheduling, nice ranks a process only within its session), with
+# logs in DIR/runs (M1, M2), DIR/m3/runs (M3 and its extensions) and
+# DIR/sensitivity/<factor>/runs. Each milestone keeps its own compact results, so a later
+# milestone never replaces the results an earlier report was made from; a milestone that
+# finished on this machine (DIR/<name>.done) is not run again, and one whose every trial has
+# its compact result in the repository is not run at all (nothing is built for it). Stop it
+# at any time (kill, or the machine stops); the same command resumes where it stood: trials
+# a milestone finished elsewhere count from their committed compact results, the others
+# start again from generation 0 where their logs and checkpoints are not here.
 # --collect copies each milestone's compact results into media/experiment/paper/ and
-# checks that each later milestone's trials repeat the earlier one's generations
-# (build/bin/robozoo-stats --same-as; exit 1 when one does not).
+# checks that each continued milestone's trials repeat the one they continue (M2 M1's, M3-100
+# M3's, ...: build/bin/robozoo-stats --same-as; exit 1 when one does not).
 # DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 repo=$(pwd)
 dir=/var/tmp/robozoo-paper
-commit=""
 workers=$(nproc)
 action=run
 bin=""
 paper=media/experiment/paper
 trials=30
+sensitivity_trials=10
 population=150
 steps=""
-generations=30,60,500
+generations=30,60,60,30,100,150,500
 while [ $# -gt 0 ]; do
   case "$1" in
     --dir) dir=${2:?--dir needs a folder}; shift 2 ;;
-    --commit) commit=${2:?--commit needs a commit}; shift 2 ;;
     --workers) workers=${2:?--workers needs a number}; shift 2 ;;
     --bin) bin=${2:?--bin needs a folder}; shift 2 ;;
     --paper) paper=${2:?--paper needs a folder}; shift 2 ;;
     --trials) trials=${2:?--trials needs a number}; shift 2 ;;
+    --sensitivity-trials) sensitivity_trials=${2:?--sensitivity-trials needs a number}; shift 2 ;;
     --population) population=${2:?--population needs a number}; shift 2 ;;
     --steps) steps=${2:?--steps needs a number}; shift 2 ;;
-    --generations) generations=${2:?--generations needs G1,G2,G3}; shift 2 ;;
+    --generations) generations=${2:?--generations needs G1,G2,G3,GS,G4,G5,G6}; shift 2 ;;
     --collect) action=collect; shift ;;
     --status) action=status; shift ;;
-    -h|--help) sed -n '2,32p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,47p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "paper_experiment.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
-IFS=, read -r g1 g2 g3 <<<"$generations"
-for n in "$trials" "$population" "$g1" "$g2" "$g3" ${steps:+"$steps"}; do
+IFS=, read -r g1 g2 g3 gs g4 g5 g6 extra <<<"$generations"
+[ -z "${extra:-}" ] || { echo "paper_experiment.sh: --generations takes seven counts (see --help)" >&2; exit 2; }
+for n in "$workers" "$trials" "$sensitivity_trials" "$population" "$g1" "$g2" "$g3" "$gs" "$g4" "$g5" "$g6" ${steps:+"$steps"}; do
   [[ "$n" =~ ^[1-9][0-9]*$ ]] || { echo "paper_experiment.sh: not a positive count: '$n' (see --help)" >&2; exit 2; }
 done
 mkdir -p "$dir"
-# The milestones: name, arms, generations, results folder (under DIR and under $paper).
+# M3's configuration, stated in full, so that its checkpoints and results are checked against it.
+m3_sets="growth.bias_input=0.3,growth.weight_mapping=rescaled,neat.add_node_innovations=fresh"
+# The milestones: name, version file (under $paper), runs folder, arms, generations, trials,
+# results folder (under DIR and under $paper), --set assignments (comma-separated, - for none),
+# the milestone it continues (- for none: its trials repeat that one's generations).
 milestones=(
-  "M1 feedforward,recurrent,recurrent-sparse,recurrent-zero $g1 results"
-  "M2 feedforward,recurrent $g2 m2/results"
-  "M3 feedforward,recurrent $g3 m3/results"
+  "M1 VERSION runs feedforward,recurrent,recurrent-sparse,recurrent-zero $g1 $trials results - -"
+  "M2 VERSION runs feedforward,recurrent $g2 $trials m2/results - M1"
+  "M3 m3/VERSION m3/runs feedforward,recurrent $g3 $trials m3/results $m3_sets -"
+  "S-bias-1.0 m3/VERSION sensitivity/bias-1.0/runs feedforward,recurrent $gs $sensitivity_trials sensitivity/bias-1.0/results growth.bias_input=1.0 -"
+  "S-proportional-weights m3/VERSION sensitivity/proportional-weights/runs feedforward,recurrent $gs $sensitivity_trials sensitivity/proportional-weights/results growth.weight_mapping=proportional -"
+  "S-shared-add-node m3/VERSION sensitivity/shared-add-node/runs feedforward,recurrent $gs $sensitivity_trials sensitivity/shared-add-node/results neat.add_node_innovations=shared -"
+  "S-no-contact-rule m3/VERSION sensitivity/no-contact-rule/runs feedforward,recurrent $gs $sensitivity_trials sensitivity/no-contact-rule/results sim.rolling_contact_rule=false -"
+  "S-cap-100 m3/VERSION sensitivity/cap-100/runs feedforward,recurrent $gs $sensitivity_trials sensitivity/cap-100/results growth.max_spheres=100 -"
+  "M3-100 m3/VERSION m3/runs feedforward,recurrent $g4 $trials m3/g100/results $m3_sets M3"
+  "M3-150 m3/VERSION m3/runs feedforward,recurrent $g5 $trials m3/g150/results $m3_sets M3-100"
+  "M3-500 m3/VERSION m3/runs feedforward,recurrent $g6 $trials m3/g500/results $m3_sets M3-150"
 )
+folder_of() {  # milestone name -> its results folder
+  local m name rest
+  for m in "${milestones[@]}"; do
+    read -r name _ _ _ _ _ rest _ <<<"$m"
+    [ "$name" = "$1" ] && { echo "$rest"; return 0; }
+  done
+  return 1
+}
 
 if [ "$action" = collect ]; then
-  # A later milestone's trials must repeat the earlier one's generations (runs are
+  # A continued milestone's trials must repeat the one they continue (runs are
   # deterministic): robozoo-stats --same-as checks it, with this checkout's build.
   stats="${bin:-build/bin}/robozoo-stats"
-  prev_name="" prev_folder="" status=0
+  status=0
   for m in "${milestones[@]}"; do
-    read -r name _ _ folder <<<"$m"
+    read -r name _ _ _ _ _ folder _ continues <<<"$m"
     n=0
     for f in "$dir/$folder"/*.results.json; do
       [ -e "$f" ] || continue
@@ -86,68 +122,77 @@ if [ "$action" = collect ]; then
       cp "$f" "$paper/$folder/.tmp.$$" && mv "$paper/$folder/.tmp.$$" "$paper/$folder/$(basename "$f")"
       n=$((n + 1))
     done
+    [ "$n" -gt 0 ] || [ -d "$paper/$folder" ] || continue
     echo "paper_experiment.sh: $name: $n compact results in $paper/$folder/"
-    if [ -n "$prev_name" ] && [ -d "$paper/$folder" ] && [ -d "$paper/$prev_folder" ]; then
+    [ "$continues" != - ] || continue
+    prev_folder=$(folder_of "$continues")
+    if [ -d "$paper/$folder" ] && [ -d "$paper/$prev_folder" ]; then
       if [ ! -x "$stats" ]; then
-        echo "paper_experiment.sh: $name: not checked against $prev_name's results: no $stats (tools/build.sh robozoo-stats)"
+        echo "paper_experiment.sh: $name: not checked against $continues's results: no $stats (tools/build.sh robozoo-stats)"
       elif check=$("$stats" "$paper/$folder" --same-as "$paper/$prev_folder" 2>&1); then
-        echo "paper_experiment.sh: $name: $(tail -n 1 <<<"$check") ($prev_name's)"
+        echo "paper_experiment.sh: $name: $(tail -n 1 <<<"$check") ($continues's)"
       else
-        echo "paper_experiment.sh: $name: its results do not repeat $prev_name's generations:" >&2
+        echo "paper_experiment.sh: $name: its results do not repeat $continues's generations:" >&2
         grep -v ' agree$' <<<"$check" >&2
         status=1
       fi
     fi
-    prev_name=$name prev_folder=$folder
   done
   exit $status
 fi
 
-if [ -z "$bin" ]; then
-  if [ -z "$commit" ]; then
-    if [ -f "$paper/VERSION" ]; then
-      commit=$(head -n 1 "$paper/VERSION")
-    else
-      commit=$(git rev-parse HEAD)
-      if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
-        echo "paper_experiment.sh: the work tree has uncommitted changes; commit them or name --commit" >&2
-        exit 2
-      fi
+# Sets bin to the programs of the version recorded in $paper/$1 (writing it first: this
+# checkout's commit), cloned and built once in DIR/src-<commit>; with --bin, that folder.
+use_version() {
+  [ -z "$fixed_bin" ] || { bin=$fixed_bin; return 0; }
+  local file="$paper/$1" commit
+  if [ -f "$file" ]; then
+    commit=$(head -n 1 "$file")
+  else
+    commit=$(git rev-parse HEAD)
+    if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
+      echo "paper_experiment.sh: the work tree has uncommitted changes; commit them before $file is written" >&2
+      exit 2
     fi
+    mkdir -p "$(dirname "$file")"
+    echo "$commit" >"$file"
+    echo "paper_experiment.sh: recorded the version of the milestones that use $file ($commit): commit that file"
   fi
   git cat-file -e "$commit^{commit}" 2>/dev/null || { echo "paper_experiment.sh: no commit $commit here" >&2; exit 2; }
-  if [ ! -f "$paper/VERSION" ]; then
-    mkdir -p "$paper"
-    echo "$commit" >"$paper/VERSION"
-    echo "paper_experiment.sh: recorded the experiment's version in $paper/VERSION ($commit): commit that file"
-  fi
-
-  src="$dir/src"
+  commit=$(git rev-parse "$commit")
+  local src="$dir/src-${commit:0:12}"
   bin="$src/build/bin"
-  if [ ! -x "$bin/robozoo-experiment" ] || [ ! -x "$bin/robozoo-evolve" ] || [ "$(git -C "$src" rev-parse HEAD 2>/dev/null)" != "$(git rev-parse "$commit")" ]; then
+  if [ ! -x "$bin/robozoo-experiment" ] || [ ! -x "$bin/robozoo-evolve" ]; then
     echo "paper_experiment.sh: building robozoo $commit in $src"
     rm -rf "$src"
     git clone -q "$repo" "$src"
     git -C "$src" checkout -q "$commit"
-    launcher=()
+    local launcher=()
     command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
     cmake -S "$src" -B "$src/build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF "${launcher[@]}" >/dev/null
     nice -n 10 cmake --build "$src/build" -j"$(nproc)" --target robozoo-evolve robozoo-experiment >/dev/null
   fi
-fi
-echo "paper_experiment.sh: robozoo $("$bin/robozoo-evolve" --version)"
+  echo "paper_experiment.sh: robozoo $("$bin/robozoo-evolve" --version)"
+}
+fixed_bin=$bin
 
-experiment_command() {  # arms, generations, results folder: sets cmd
-  cmd=("$bin/robozoo-experiment" --out "$dir/runs" --results "$dir/$3" --trials "$trials" --population "$population"
-    --workers "$workers" --arms "$1" --generations "$2" ${steps:+--steps "$steps"})
+experiment_command() {  # runs folder, arms, generations, trials, results folder, sets: sets cmd
+  cmd=("$bin/robozoo-experiment" --out "$dir/$1" --results "$dir/$5" --trials "$4" --population "$population"
+    --workers "$workers" --arms "$2" --generations "$3" ${steps:+--steps "$steps"})
+  local kv
+  if [ "$6" != - ]; then
+    IFS=, read -r -a assignments <<<"$6"
+    for kv in "${assignments[@]}"; do cmd+=(--set "$kv"); done
+  fi
 }
 if [ "$action" = status ]; then
   for m in "${milestones[@]}"; do
-    read -r name arms generations folder <<<"$m"
+    read -r name version runs arms gens ntrials folder sets _ <<<"$m"
     done_note=""
     [ -e "$dir/$name.done" ] && done_note=" (finished on this machine)"
-    echo "paper_experiment.sh: $name: $arms to generation $generations$done_note"
-    experiment_command "$arms" "$generations" "$folder"
+    echo "paper_experiment.sh: $name: $arms to generation $gens, $ntrials trials each$done_note"
+    use_version "$version"
+    experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
     "${cmd[@]}" --status
   done
   exit 0
@@ -165,26 +210,34 @@ low_priority() {
   return "$rc"
 }
 
-milestone() {  # name, arms, generations, results folder
-  if [ -e "$dir/$1.done" ]; then
-    echo "paper_experiment.sh: $1 finished before on this machine ($dir/$1.done)"
+milestone() {  # name, version file, runs folder, arms, generations, trials, results folder, sets
+  local name=$1 version=$2 runs=$3 arms=$4 gens=$5 ntrials=$6 folder=$7 sets=$8
+  if [ -e "$dir/$name.done" ]; then
+    echo "paper_experiment.sh: $name finished before on this machine ($dir/$name.done)"
     return 0
   fi
-  echo "paper_experiment.sh: $1: $2 to generation $3 ($(date -u +%FT%TZ))"
   # Trials this milestone finished on another machine count from their committed compact results.
-  mkdir -p "$dir/$4"
+  mkdir -p "$dir/$folder"
   local f
-  for f in "$paper/$4"/*.results.json; do
-    [ -e "$f" ] && [ ! -e "$dir/$4/$(basename "$f")" ] && cp "$f" "$dir/$4/"
+  for f in "$paper/$folder"/*.results.json; do
+    [ -e "$f" ] && [ ! -e "$dir/$folder/$(basename "$f")" ] && cp "$f" "$dir/$folder/"
   done
-  experiment_command "$2" "$3" "$4"
+  local arm_list
+  IFS=, read -r -a arm_list <<<"$arms"
+  if [ "$(find "$paper/$folder" -maxdepth 1 -name '*.results.json' 2>/dev/null | wc -l)" -ge $((${#arm_list[@]} * ntrials)) ]; then
+    echo "paper_experiment.sh: $name: every trial's compact result is in $paper/$folder; nothing to run"
+    return 0
+  fi
+  echo "paper_experiment.sh: $name: $arms to generation $gens, $ntrials trials each ($(date -u +%FT%TZ))"
+  use_version "$version"
+  experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
   low_priority "${cmd[@]}"
   # Run again later, robozoo-experiment would write this milestone's results anew from logs
   # that a later milestone has extended: the marker keeps them as they are.
-  date -u +%FT%TZ >"$dir/$1.done"
-  echo "paper_experiment.sh: $1 done ($(date -u +%FT%TZ))"
+  date -u +%FT%TZ >"$dir/$name.done"
+  echo "paper_experiment.sh: $name done ($(date -u +%FT%TZ))"
 }
 for m in "${milestones[@]}"; do
-  read -r name arms generations folder <<<"$m"
-  milestone "$name" "$arms" "$generations" "$folder"
+  read -r name version runs arms gens ntrials folder sets _ <<<"$m"
+  milestone "$name" "$version" "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
 done

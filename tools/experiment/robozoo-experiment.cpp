@@ -188,6 +188,9 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
                  "the MPI launcher with its options, split at spaces, before -np (e.g. \"mpirun --hostfile hosts\" "
                  "or \"srun --mpi=pmix\"); only with --mpi")
       ->capture_default_str();
+  app.add_option("--set", p.sets,
+                 "KEY=VALUE: a configuration change for every trial, passed to robozoo-evolve --set (repeatable; "
+                 "e.g. growth.bias_input=1.0); checkpoints and compact results must hold it");
   app.add_option("--evolve", evolve, "the robozoo-evolve program (default: the one next to this program)");
   app.add_option("--progress-interval", progress_interval,
                  "seconds between progress lines (at most one per generation)")
@@ -239,6 +242,10 @@ Experiment plan_experiment(const Options& o, std::vector<bool>& from_results) {
       throw std::invalid_argument(rp + " is the result of run " + r.run.run_id + " with population " +
                                   std::to_string(r.run.population) + ", not of trial " + t.name() +
                                   " with population " + std::to_string(p.population));
+    const std::string sets = sets_mismatch(nlohmann::json::parse(r.run.config_json, nullptr, false), p.sets);
+    if (!sets.empty())
+      throw std::invalid_argument(rp + " belongs to another experiment: it was run with " + sets +
+                                  " (use another --results folder, or the --set it was run with)");
     if (!r.run.complete() || r.run.generations_requested < p.generations)
       throw std::invalid_argument(rp + " holds " + t.name() + " at " + std::to_string(r.run.generations.size()) +
                                   " generations, but its log and checkpoint are not in " + p.out_dir +

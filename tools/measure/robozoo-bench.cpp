@@ -255,7 +255,7 @@ int main(int argc, char** argv) {
     if (!log_path.empty()) {
       if (!std::filesystem::is_regular_file(log_path)) throw std::runtime_error("no log file " + log_path);
       checkpoint = read_checkpoint(checkpoint_path_for(log_path));
-      log_config = config_from_json(checkpoint.config);
+      log_config = config_from_record(checkpoint.config);
       if (checkpoint.population.genomes.empty()) throw std::runtime_error(log_path + ".checkpoint holds no genomes");
     }
   } catch (const std::exception& e) {

@@ -658,7 +658,7 @@ int main(int argc, char** argv) {
     MpiWorkerStats stats;
     serve_mpi_session(
         [](const std::string& setup) {
-          const RunConfig c = config_from_json(nlohmann::json::parse(setup));
+          const RunConfig c = config_from_record(nlohmann::json::parse(setup));
           return WorkFn([eval = c.eval](const Bytes& job) { return run_eval_job(job, eval); });
         },
         &stats);

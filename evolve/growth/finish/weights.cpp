@@ -8,7 +8,12 @@
 namespace robozoo {
 
 double expressed_weight(double output_w, const GrowthParams& params) {
-  return std::abs(output_w) > params.weight_threshold ? output_w * params.weight_max : 0.0;
+  const double t = params.weight_threshold;
+  if (!(std::abs(output_w) > t)) return 0.0;
+  if (params.weight_mapping == WeightMapping::Proportional) return output_w * params.weight_max;
+  // HyperNEAT: (w - T) / (1 - T) * w_max above the threshold, (w + T) / (1 - T) * w_max below -T.
+  const double beyond = output_w > 0 ? output_w - t : output_w + t;
+  return beyond / (1.0 - t) * params.weight_max;
 }
 
 void set_ctrnn_weights(Robot& robot, CppnProbe& probe, const GrowthParams& params) {

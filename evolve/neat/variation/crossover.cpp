@@ -28,7 +28,7 @@ Genome crossover_both_parents(const Genome& a, double fitness_a, const Genome& b
   };
   size_t i = 0, j = 0;
   while (i < a.links.size() || j < b.links.size()) {
-    // Drawn (the paper's code): one draw per gene position, matching or not.
+    // Drawn (the first author's copy of HyperNEAT in jauerb/CPPN_Trimesh): one draw per gene position, matching or not.
     const bool choose_a_now = drawn ? rng.bernoulli(share_a) : false;
     const LinkGene* la = i < a.links.size() ? &a.links[i] : nullptr;
     const LinkGene* lb = j < b.links.size() ? &b.links[j] : nullptr;

@@ -17,7 +17,7 @@ namespace robozoo {
 /// no draw is made and the chosen gene is copied as it is (HyperNEAT).
 /// With CrossoverGenes::Both (MisterTea's HyperNEAT) every gene of either parent is inherited and a
 /// matching gene comes from `a` with probability fa / (fa + fb) (one draw per matching gene); with
-/// CrossoverGenes::Drawn (the paper's HyperNEAT) one such draw is made for every gene of either
+/// CrossoverGenes::Drawn (HyperNEAT as jauerb/CPPN_Trimesh has it) one such draw is made for every gene of either
 /// parent, in innovation order: a matching gene comes from the drawn parent, a gene only one parent
 /// has is kept when that parent is drawn. There a fitness of 0 counts as 0.0001, and the child's
 /// nodes are the inputs and outputs and every hidden node its links touch (a's copy first).

@@ -26,6 +26,15 @@ InnovationTracker::Split InnovationTracker::split(int64_t link_innovation, int32
   return s;
 }
 
+InnovationTracker::Split InnovationTracker::fresh_split(int32_t from, int32_t to, Activation activation) {
+  Split s;
+  s.node = next_node_id_++;
+  s.in_link = link(from, s.node);
+  s.out_link = link(s.node, to);
+  s.activation = activation;
+  return s;
+}
+
 void InnovationTracker::new_generation() {
   links_.clear();
   splits_.clear();

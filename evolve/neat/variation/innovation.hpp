@@ -30,6 +30,9 @@ class InnovationTracker {
   /// `from`/`to` are the split link's endpoints: the new links from -> node and
   /// node -> to are also registered as link innovations of this generation.
   Split split(int64_t link_innovation, int32_t from, int32_t to, Activation activation = Activation::SignedSigmoid);
+  /// HyperNEAT's split of from -> to: always a new node id, so the links from -> node and
+  /// node -> to are new pairs of this generation and get new innovation numbers (link()).
+  Split fresh_split(int32_t from, int32_t to, Activation activation);
   /// Forget this generation's mutations (numbers keep increasing).
   void new_generation();
   int64_t next_innovation() const { return next_innovation_; }

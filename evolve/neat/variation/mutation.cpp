@@ -157,7 +157,9 @@ bool mutate_add_node(Genome& g, const NeatParams& p, InnovationTracker& innov, i
   const size_t k = splittable[rng.index(splittable.size())];
   const Activation drawn = acts[rng.index(acts.size())];
   const LinkGene old = g.links[k];
-  const InnovationTracker::Split s = innov.split(old.innovation, old.from, old.to, drawn);
+  const InnovationTracker::Split s = p.add_node_innovations == AddNodeInnovations::Fresh
+                                         ? innov.fresh_split(old.from, old.to, drawn)
+                                         : innov.split(old.innovation, old.from, old.to, drawn);
   // The same split twice in one genome (possible only if a link is split again
   // within the generation that split it): leave the genome alone.
   if (node_index(g, s.node) >= 0 || has_innovation(g, s.in_link) || has_innovation(g, s.out_link)) return false;

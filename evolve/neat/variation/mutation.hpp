@@ -33,8 +33,11 @@ bool mutate_add_link(Genome& g, Regime regime, const GenomeLayout& layout, const
 /// only; without p.split_bias_links never a link from the bias input (Stanley's
 /// 20 random tries among all link genes, taken as the uniform choice among those
 /// they may accept). A new hidden node h, at the mean of a's and b's drawing positions,
-/// gets an activation drawn uniformly from p.hidden_activations (the first such
-/// split of the generation fixes it, see InnovationTracker); a -> h gets weight
+/// gets an activation drawn uniformly from p.hidden_activations. Its numbers:
+/// with AddNodeInnovations::Fresh (HyperNEAT) a new node id and new link
+/// innovations for every split; with Shared the first split of a link in the
+/// generation fixes node id, innovations and activation for every later
+/// split of that link (see InnovationTracker). a -> h gets weight
 /// 1. HyperNeat: the old link stays enabled with its weight halved (w/2) and
 /// is born again in `generation`, h -> b gets w/4. Classic: the old link is
 /// disabled, h -> b gets w. New links are born in `generation`. Returns false

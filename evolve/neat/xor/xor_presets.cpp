@@ -37,6 +37,7 @@ XorPreset xor_preset(const std::string& name) {
     p.compatibility_threshold = 3.0;
     p.compatibility_modifier = 0.0;  // the paper's threshold is fixed
     p.add_node = AddNodeRule::Classic;
+    p.add_node_innovations = AddNodeInnovations::Shared;  // NEAT's innovation list
     p.disabled_gene_probability = 0.75;
     p.interspecies_mating_probability = 0.001;
     p.initial_links = InitialLinks::InputsToOutputs;

@@ -33,7 +33,7 @@ ChampionLogInfo write_champion_log(const RunResults& results, const std::string&
   if (!gen) throw std::invalid_argument(s.path + ": the champion's generation is not in the result");
   RunConfig config;
   try {
-    config = config_from_json(nlohmann::json::parse(s.config_json));
+    config = config_from_record(nlohmann::json::parse(s.config_json));
   } catch (const std::exception& e) {
     throw std::invalid_argument(s.path + ": its configuration cannot be read by this robozoo: " + e.what());
   }

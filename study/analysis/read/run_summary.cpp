@@ -25,7 +25,7 @@ void apply_run_configuration(RunSummary& s) {
   s.max_spheres = 0;
   s.target_distance = 0;
   try {
-    const RunConfig c = config_from_json(nlohmann::json::parse(s.config_json));
+    const RunConfig c = config_from_record(nlohmann::json::parse(s.config_json));
     // run_t's regime is authoritative; the start topology comes from the configuration.
     s.arm = arm_name(arm_of(s.regime == 0 ? Regime::FeedForward : Regime::Recurrent, c.neat.initial_links));
     s.max_spheres = c.eval.growth.max_spheres;

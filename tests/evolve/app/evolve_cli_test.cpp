@@ -4,6 +4,8 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
 #include "evolve/messages/build.hpp"
@@ -30,6 +32,26 @@ TEST(EvolveCli, HelpDocumentsEveryFlag) {
   for (const char* flag : {"--regime", "--seed", "--population", "--generations", "--steps", "--workers", "--config",
                            "--log", "--lcm-url", "--pose-every", "--publish-all", "--resume"})
     EXPECT_NE(o.output.find(flag), std::string::npos) << flag;
+}
+
+TEST(EvolveCli, PrintConfigShowsTheAuthorsDefaultsAndExplainsThem) {
+  const auto o = run_shell(bin("robozoo-evolve") + " --print-config");
+  ASSERT_EQ(o.status, 0) << o.output;
+  const nlohmann::json j = nlohmann::json::parse(o.output);
+  EXPECT_EQ(j.at("growth").at("bias_input"), 0.3);
+  EXPECT_EQ(j.at("growth").at("weight_mapping"), "rescaled");
+  EXPECT_EQ(j.at("neat").at("add_node_innovations"), "fresh");
+  const auto e = run_shell(bin("robozoo-evolve") + " --print-config --explain --set growth.bias_input=1.0");
+  ASSERT_EQ(e.status, 0) << e.output;
+  EXPECT_NE(e.output.find("growth.bias_input = 1.0  # value of the CPPN's constant bias input (dimensionless)"),
+            std::string::npos)
+      << e.output;
+  EXPECT_NE(e.output.find("growth.weight_mapping = \"rescaled\"  # how a CPPN weight output"), std::string::npos);
+  EXPECT_NE(e.output.find("neat.add_node_innovations = \"fresh\"  # numbers of an add-node split"), std::string::npos);
+  EXPECT_NE(e.output.find("sim.dt = 0.01  # physics step (s)"), std::string::npos);
+  const auto bad = run_shell(bin("robozoo-evolve") + " --explain");
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--explain only applies to --print-config"), std::string::npos) << bad.output;
 }
 
 TEST(EvolveCli, OneAndTwoWorkersGiveIdenticalLogs) {

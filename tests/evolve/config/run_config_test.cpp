@@ -40,6 +40,41 @@ TEST(RunConfig, DefaultsMatchDesign) {
   EXPECT_EQ(j["neat"]["hidden_activations"], nlohmann::json({"signed_sigmoid", "signed_cosine", "gaussian"}));
 }
 
+TEST(RunConfig, DefaultsAreTheAuthorsBiasWeightMappingAndAddNodeNumbers) {
+  const auto j = config_to_json(RunConfig{});
+  EXPECT_EQ(j["growth"]["bias_input"], 0.3);
+  EXPECT_EQ(j["growth"]["weight_mapping"], "rescaled");
+  EXPECT_EQ(j["neat"]["add_node_innovations"], "fresh");
+  const RunConfig c = config_from_json(
+      {{"growth", {{"weight_mapping", "proportional"}}}, {"neat", {{"add_node_innovations", "shared"}}}});
+  EXPECT_EQ(c.eval.growth.weight_mapping, WeightMapping::Proportional);
+  EXPECT_EQ(c.neat.add_node_innovations, AddNodeInnovations::Shared);
+  EXPECT_NE(error_of({{"growth", {{"weight_mapping", "linear"}}}}).find("growth.weight_mapping"), std::string::npos);
+  EXPECT_NE(error_of({{"neat", {{"add_node_innovations", 1}}}}).find("neat.add_node_innovations"), std::string::npos);
+}
+
+TEST(RunConfig, ARecordWithoutTheNewerKeysMeansTheBehaviourItRanWith) {
+  // A configuration as logs, checkpoints and compact results recorded it before these keys existed.
+  nlohmann::json old = config_to_json(RunConfig{});
+  old["growth"].erase("weight_mapping");
+  old["growth"].erase("bias_input");
+  old["neat"].erase("add_node_innovations");
+  const RunConfig c = config_from_record(old);
+  EXPECT_EQ(c.eval.growth.bias_input, 1.0);
+  EXPECT_EQ(c.eval.growth.weight_mapping, WeightMapping::Proportional);
+  EXPECT_EQ(c.neat.add_node_innovations, AddNodeInnovations::Shared);
+  // What a record says is what runs, old keys and new.
+  old["growth"]["bias_input"] = 0.5;
+  old["growth"]["weight_mapping"] = "rescaled";
+  old["neat"]["add_node_innovations"] = "fresh";
+  const RunConfig d = config_from_record(old);
+  EXPECT_EQ(d.eval.growth.bias_input, 0.5);
+  EXPECT_EQ(d.eval.growth.weight_mapping, WeightMapping::Rescaled);
+  EXPECT_EQ(d.neat.add_node_innovations, AddNodeInnovations::Fresh);
+  // A new record reads back as written.
+  EXPECT_EQ(config_to_json(config_from_record(config_to_json(RunConfig{}))), config_to_json(RunConfig{}));
+}
+
 TEST(RunConfig, OverlayChangesOnlyGivenKeys) {
   const auto c = config_from_json({{"regime", "recurrent"}, {"neat", {{"population", 20}}}});
   EXPECT_EQ(c.regime, Regime::Recurrent);

@@ -33,4 +33,12 @@ inline void link(Genome& g, int in, int out, double weight) {
 /// Output `out` becomes the constant ssig(inv_ssig(v)) ~ v (with bias input 1).
 inline void constant(Genome& g, int out, double v) { link(g, kInBias, out, inv_ssig(v)); }
 
+/// The growth defaults with a bias input of 1, the value constant() and the hand-worked
+/// expectations of the growth tests assume (the default is the authors' 0.3).
+inline GrowthParams unit_bias_growth() {
+  GrowthParams p;
+  p.bias_input = 1.0;
+  return p;
+}
+
 }  // namespace robozoo::testing

@@ -312,7 +312,12 @@ class Checker {
     }
   }
 
-  double expressed(double w) const { return std::abs(w) > p_.weight_threshold ? w * p_.weight_max : 0.0; }
+  double expressed(double w) const {
+    const double t = p_.weight_threshold;
+    if (!(std::abs(w) > t)) return 0.0;
+    if (p_.weight_mapping == WeightMapping::Proportional) return w * p_.weight_max;
+    return (w > 0 ? w - t : w + t) / (1 - t) * p_.weight_max;
+  }
 
   void weights() {
     const auto ns = static_cast<Eigen::Index>(r_.sensors.size());
@@ -321,7 +326,8 @@ class Checker {
     ASSERT_EQ(r_.w_sensor_neuron.cols(), nn);
     ASSERT_EQ(r_.w_neuron_neuron.rows(), nn);
     ASSERT_EQ(r_.w_neuron_neuron.cols(), nn);
-    const double floor = p_.weight_threshold * p_.weight_max;
+    // The smallest magnitude a link may have: above threshold * weight_max when proportional, above 0 when rescaled.
+    const double floor = p_.weight_mapping == WeightMapping::Proportional ? p_.weight_threshold * p_.weight_max : 0.0;
     for (Eigen::Index k = 0; k < ns; ++k)
       for (Eigen::Index i = 0; i < nn; ++i) {
         const double w = r_.w_sensor_neuron(k, i);
@@ -382,7 +388,7 @@ TEST(GrowInvariants, SaturatedCppnGrowsEveryTouchingSphere) {
   testing::constant(g, kOutJoint, 0.9);
   for (int cap : {50, 200}) {
     SCOPED_TRACE("max_spheres " + std::to_string(cap));
-    GrowthParams p;
+    GrowthParams p = testing::unit_bias_growth();
     p.max_spheres = cap;
     Network net(g, robot_layout());
     const Robot robot = grow(net, p);
@@ -398,7 +404,7 @@ TEST(GrowInvariants, SaturatedCppnGrowsEveryTouchingSphere) {
 }
 
 TEST(GrowInvariants, HoldForRandomCppnsOfBothRegimes) {
-  const GrowthParams p;
+  const GrowthParams p = testing::unit_bias_growth();  // the bias -> m shift below assumes a bias input of 1
   Rng rng(20240611);
   const int kGenomes = 1000;
   int grew = 0, joint = 0, pruned = 0, distance = 0, simulate = 0, full = 0, partial = 0;

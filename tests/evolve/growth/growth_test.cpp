@@ -22,7 +22,7 @@ using testing::inv_ssig;
 using testing::link;
 using testing::ssig;
 
-Robot grow_genome(const Genome& g, const GrowthParams& p = {}) {
+Robot grow_genome(const Genome& g, const GrowthParams& p = testing::unit_bias_growth()) {
   Network net(g, robot_layout());
   return grow(net, p);
 }
@@ -38,7 +38,7 @@ TEST(Grow, NoMatterAnywhereLeavesTheRootAlone) {
   ASSERT_EQ(r.spheres.size(), 1u);
   EXPECT_EQ(r.spheres[0].parent, -1);
   EXPECT_EQ(r.spheres[0].radius, 0.1);
-  EXPECT_EQ(r.spheres[0].density, GrowthParams{}.rho_min);  // m <= T: the root gets rho_min
+  EXPECT_EQ(r.spheres[0].density, testing::unit_bias_growth().rho_min);  // m <= T: the root gets rho_min
   EXPECT_EQ(r.num_bodies, 1);
   EXPECT_TRUE(r.joints.empty());
   EXPECT_TRUE(r.sensors.empty());
@@ -85,7 +85,7 @@ Genome ring_genome() {
 // 2 pi - 6.12 = 0.163 rad from k = 0 (and 562..628 are all too close to 561 or
 // to 0), so the ring has 12 children.
 TEST(Grow, MatterEverywhereWithoutJointsGrowsARigidRing) {
-  const GrowthParams p;
+  const GrowthParams p = testing::unit_bias_growth();
   const Robot r = grow_genome(ring_genome(), p);
   ASSERT_EQ(r.spheres.size(), 13u);
   const double m = ssig(40 * 0.1 - 1);
@@ -145,7 +145,7 @@ TEST(Grow, BoundingSquareCanExcludeEveryCloudPoint) {
   // Every point of the root's cloud has max(|x|, |y|) >= 0.1 / sqrt(2) = 0.0707.
   Genome g = bare_robot_genome();
   constant(g, kOutMatter, 0.9);
-  GrowthParams p;
+  GrowthParams p = testing::unit_bias_growth();
   p.bound = 0.07;
   EXPECT_EQ(grow_genome(g, p).spheres.size(), 1u);
   p.bound = 0.075;
@@ -177,7 +177,7 @@ Genome chain_genome(double w) {
 }
 
 TEST(Grow, JointSurvivesOnANonLeafSphere) {
-  GrowthParams p;
+  GrowthParams p = testing::unit_bias_growth();
   p.max_spheres = 3;
   const Robot r = grow_genome(chain_genome(0.5), p);
   ASSERT_EQ(r.spheres.size(), 3u);
@@ -227,12 +227,13 @@ TEST(Grow, JointSurvivesOnANonLeafSphere) {
     EXPECT_EQ(r.sensors[k].type, want[k]) << k;
     EXPECT_EQ(r.sensors[k].sphere, sphere_of[k]) << k;
   }
-  // Constant w = 0.5 > 0.2: every link is expressed with weight 0.5 * 3.
+  // Constant w = 0.5 > 0.2: every link is expressed, rescaled from the threshold:
+  // (0.5 - 0.2) / 0.8 * 3 = 1.125.
   ASSERT_EQ(r.w_sensor_neuron.rows(), 10);
   ASSERT_EQ(r.w_sensor_neuron.cols(), 1);
-  for (int k = 0; k < 10; ++k) EXPECT_NEAR(r.w_sensor_neuron(k, 0), 1.5, 1e-12);
+  for (int k = 0; k < 10; ++k) EXPECT_NEAR(r.w_sensor_neuron(k, 0), 1.125, 1e-12);
   ASSERT_EQ(r.w_neuron_neuron.rows(), 1);
-  EXPECT_NEAR(r.w_neuron_neuron(0, 0), 1.5, 1e-12);
+  EXPECT_NEAR(r.w_neuron_neuron(0, 0), 1.125, 1e-12);
   EXPECT_EQ(r.r_term, 15.0);
   EXPECT_TRUE(r.simulate);
   // The root (0.1) is the largest sphere.
@@ -240,7 +241,7 @@ TEST(Grow, JointSurvivesOnANonLeafSphere) {
 }
 
 TEST(Grow, WeightsAtOrBelowThresholdExpressNoLink) {
-  GrowthParams p;
+  GrowthParams p = testing::unit_bias_growth();
   p.max_spheres = 3;
   const Robot r = grow_genome(chain_genome(0.15), p);
   ASSERT_EQ(r.joints.size(), 1u);
@@ -251,7 +252,7 @@ TEST(Grow, WeightsAtOrBelowThresholdExpressNoLink) {
 }
 
 TEST(Grow, DistanceSensorIsNeededForSimulation) {
-  GrowthParams p;
+  GrowthParams p = testing::unit_bias_growth();
   p.max_spheres = 3;
   Genome g = chain_genome(0.5);
   for (auto& l : g.links)
@@ -295,7 +296,7 @@ TEST(Grow, QueuePopsHighestMatterFirst) {
 TEST(Grow, StopsAtMaxSpheres) {
   Genome g = bare_robot_genome();
   constant(g, kOutMatter, 0.9);
-  GrowthParams p;
+  GrowthParams p = testing::unit_bias_growth();
   for (int n : {1, 2, 7, 50}) {
     p.max_spheres = n;
     EXPECT_EQ(grow_genome(g, p).spheres.size(), static_cast<size_t>(n));
@@ -330,7 +331,7 @@ TEST(Grow, SameGenomeGrowsTheSameRobot) {
 TEST(Grow, RejectsBadInput) {
   Genome g = bare_robot_genome();
   Network net(g, robot_layout());
-  GrowthParams p;
+  GrowthParams p = testing::unit_bias_growth();
   p.r_min = 0.2;  // above r_init
   EXPECT_THROW(grow(net, p), std::invalid_argument);
   p = {};

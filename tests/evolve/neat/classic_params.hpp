@@ -17,6 +17,7 @@ inline NeatParams classic_neat() {
   p.add_link = AddLinkRule::Tries;
   p.self_loops = true;
   p.add_node = AddNodeRule::Classic;
+  p.add_node_innovations = AddNodeInnovations::Shared;
   p.compatibility = CompatibilityRule::Classic;
   return p;
 }

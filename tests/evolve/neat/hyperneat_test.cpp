@@ -1,5 +1,5 @@
 // The mechanics of HyperNEAT's own NEAT (NEAT_GeneticIndividual, NEAT_GeneticSpecies,
-// NEAT_GeneticPopulation; the paper's copy in jauerb/CPPN_Trimesh) that robozoo reproduces as
+// NEAT_GeneticPopulation; the first author's later copy in jauerb/CPPN_Trimesh) that robozoo reproduces as
 // options and uses by default. Every expectation is worked out by hand from HyperNEAT's rule,
 // not read back from the code; where the rule draws random numbers, a second generator with the
 // same seed replays the draws the rule makes, in the rule's order.

@@ -60,10 +60,12 @@ TEST(Live, FileNamesAndOptions) {
 
 TEST(Live, PictureAndVideosWhileEvolveRuns) {
   TempDir dir;
-  const std::string script = "(" + live_command(dir / "out", 3) + " > '" + (dir / "render.txt") +
-                             "' 2>&1 & R=\\$!; sleep 1; " + bin("robozoo-evolve") + " --log '" + (dir / "run.lcmlog") +
-                             "' --workers 2 --seed 7 --population 24 --generations 4 --steps 400 --quiet --lcm-url '" +
-                             kUrl + "'; E=\\$?; wait \\$R; S=\\$?; exit \\$((E * 16 + S)))";
+  const std::string script =
+      "(" + live_command(dir / "out", 3) + " > '" + (dir / "render.txt") + "' 2>&1 & R=\\$!; sleep 1; " +
+      bin("robozoo-evolve") + " --log '" + (dir / "run.lcmlog") +
+      "' --workers 2 --seed 7 --population 24 --generations 4 --steps 400 --set growth.bias_input=1.0 --quiet "
+      "--lcm-url '" +
+      kUrl + "'; E=\\$?; wait \\$R; S=\\$?; exit \\$((E * 16 + S)))";
   const robozoo::testing::Outcome o = in_namespace(script);
   const std::string log = read_file(dir / "render.txt");
   ASSERT_EQ(o.status, 0) << o.output << "\n" << log;

@@ -154,6 +154,39 @@ TEST(TrialPlan, BadSizesAreRefused) {
   EXPECT_THROW(validate_experiment(p), std::invalid_argument);
 }
 
+TEST(TrialPlan, SetsGoToEveryTrialAlsoOnResume) {
+  ExperimentParams p = small();
+  p.sets = {"growth.bias_input=1.0", "sim.rolling_contact_rule=false"};
+  for (const Trial& t : plan_trials(p))
+    for (bool resume : {false, true}) {
+      const auto a = evolve_arguments(t, p, resume);
+      EXPECT_TRUE(has(a, {"--set", "growth.bias_input=1.0"}));
+      EXPECT_TRUE(has(a, {"--set", "sim.rolling_contact_rule=false"}));
+    }
+}
+
+TEST(TrialPlan, BadOrOwnSetsAreRefusedNamingThem) {
+  auto error_of = [](const std::string& kv) {
+    ExperimentParams p = small();
+    p.sets = {kv};
+    try {
+      validate_experiment(p);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error_of("growth.bias_input").find("--set growth.bias_input"), std::string::npos);
+  EXPECT_NE(error_of("growth.no_such_key=1").find("no_such_key"), std::string::npos);
+  EXPECT_NE(error_of("growth.max_spheres=0").find("growth.max_spheres"), std::string::npos);
+  EXPECT_NE(error_of("neat.population=20").find("the experiment's own"), std::string::npos);
+  EXPECT_NE(error_of("neat.initial_links=inputs_to_outputs").find("the experiment's own"), std::string::npos);
+  EXPECT_NE(error_of("sim.steps=20").find("the experiment's own"), std::string::npos);
+  EXPECT_NE(error_of("seed=3").find("the experiment's own"), std::string::npos);
+  EXPECT_EQ(error_of("growth.max_spheres=100"), "");
+  EXPECT_EQ(error_of("neat.add_node_innovations=shared"), "");
+}
+
 TEST(TrialPlan, LocalTrialCommandIsTheProgramAndItsArguments) {
   const ExperimentParams p = small();
   const Trial t = plan_trials(p)[0];

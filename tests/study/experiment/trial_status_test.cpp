@@ -73,6 +73,30 @@ TEST(TrialStatus, ACheckpointOfAnotherExperimentIsRefused) {
   EXPECT_THROW(trial_status(f.trial, steps), std::invalid_argument);
 }
 
+TEST(TrialStatus, ACheckpointWithoutTheExperimentsSetsIsRefused) {
+  Fixture f;
+  f.checkpoint(2, false);  // the defaults: bias input 0.3, rescaled weights
+  ExperimentParams bias = f.p;
+  bias.sets = {"growth.bias_input=1.0", "growth.weight_mapping=rescaled"};
+  try {
+    trial_status(f.trial, bias);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("growth.bias_input 0.3, not 1.0"), std::string::npos) << what;
+    EXPECT_EQ(what.find("weight_mapping"), std::string::npos) << what;
+  }
+  ExperimentParams same = f.p;
+  same.sets = {"growth.bias_input=0.3"};
+  EXPECT_EQ(trial_status(f.trial, same).state, TrialState::Partial);
+  // A recorded configuration without a newer key ran with its old behaviour.
+  nlohmann::json old = config_to_json(RunConfig{});
+  old["growth"].erase("weight_mapping");
+  EXPECT_EQ(sets_mismatch(old, {"growth.weight_mapping=proportional"}), "");
+  EXPECT_EQ(sets_mismatch(old, {"growth.weight_mapping=rescaled"}),
+            "growth.weight_mapping \"proportional\", not \"rescaled\"");
+}
+
 TEST(TrialStatus, MoreGenerationsThanATrialWasStartedForExtendIt) {
   Fixture f;
   f.checkpoint(4, true, 12, 2, 5);  // finished at 5

@@ -57,13 +57,16 @@ LogContents local_trial(const TempDir& dir, const std::string& regime, const std
 
 TEST(ExperimentMpiCli, TrialsRunAsMpiJobsAndEqualLocalTrials) {
   TempDir dir, ref;
-  const auto r = run_shell(
-      join(mpi_driver(dir.path, 3, {"--trials", "1", "--population", "10", "--generations", "2", "--steps", "200"})));
+  // M1/M2's bias input, so that the feed-forward trial's robots reach the simulator too.
+  const auto r = run_shell(join(mpi_driver(dir.path, 3,
+                                           {"--trials", "1", "--population", "10", "--generations", "2", "--steps",
+                                            "200", "--set", "growth.bias_input=1.0"})));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("MPI jobs of 3 ranks"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("-np 3 " + bin("robozoo-evolve") + " --log"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("--mpi"), std::string::npos) << r.output;
-  const std::vector<std::string> sizes = {"--population", "10", "--generations", "2", "--steps", "200"};
+  const std::vector<std::string> sizes = {"--population", "10",  "--generations", "2",
+                                          "--steps",      "200", "--set",         "growth.bias_input=1.0"};
   for (const std::string regime : {"feedforward", "recurrent"}) {
     // Trial 1: feedforward seed 1, recurrent seed 2.
     const std::string name = regime + (regime == "recurrent" ? "-s2" : "-s1");

@@ -22,8 +22,9 @@ const std::string kUrl = "udpm://239.255.76.67:7667?ttl=0";
 
 // Population 30, 3 generations of 600 steps: each new champion's trajectory is
 // 151 poses at the default --pose-every 4, five times LCM's queue of 31.
-const std::vector<std::string> kRun = {"--seed", "1",       "--population", "30",     "--generations",
-                                       "3",      "--steps", "600",          "--quiet"};
+// Recurrent CPPNs with the default configuration: two new champions' trajectories.
+const std::vector<std::string> kRun = {"--regime",      "recurrent", "--seed",  "1",   "--population", "30",
+                                       "--generations", "3",         "--steps", "600", "--quiet"};
 
 /// Runs `inner` (a shell script) in a private network namespace with multicast
 /// on the loopback interface.

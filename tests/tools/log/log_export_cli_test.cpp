@@ -23,7 +23,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kTiny = {"--seed", "5", "--population", "10", "--steps", "300", "--quiet"};
+// M1/M2's bias input 1.0, at which a feed-forward CPPN grows robots before any mutation.
+const std::vector<std::string> kTiny = {"--seed",  "5",     "--population",         "10", "--steps", "300",
+                                        "--quiet", "--set", "growth.bias_input=1.0"};
 
 fs::path work_dir() { return fs::temp_directory_path() / ("robozoo_log_export_" + std::to_string(::getpid())); }
 

@@ -38,9 +38,10 @@ TEST(Weights, MidpointQueriesWithTheSensorsOneHot) {
   Robot r = model();
   set_ctrnn_weights(r, probe, p);
   auto mid = [](int a, int b) { return (0.2 * a + 0.2 * b) / 2.0; };  // x of the midpoint
-  auto w = [&](double sum) {
+  auto w = [&](double sum) {  // HyperNEAT's rescaling: sign(o) (|o| - 0.2) / 0.8 * 3
     const double o = ssig(sum);
-    return std::abs(o) > 0.2 ? 3.0 * o : 0.0;
+    if (!(std::abs(o) > 0.2)) return 0.0;
+    return (o > 0 ? o - 0.2 : o + 0.2) / 0.8 * 3.0;
   };
   ASSERT_EQ(r.w_sensor_neuron.rows(), 2);
   ASSERT_EQ(r.w_sensor_neuron.cols(), 2);
@@ -61,12 +62,48 @@ TEST(Weights, MidpointQueriesWithTheSensorsOneHot) {
 }
 
 TEST(Weights, ThresholdIsStrict) {
-  const GrowthParams p;
-  EXPECT_EQ(expressed_weight(0.2, p), 0.0);
-  EXPECT_EQ(expressed_weight(-0.2, p), 0.0);
-  EXPECT_EQ(expressed_weight(0.19, p), 0.0);
-  EXPECT_DOUBLE_EQ(expressed_weight(0.21, p), 0.63);
-  EXPECT_DOUBLE_EQ(expressed_weight(-1.0, p), -3.0);
+  for (WeightMapping m : {WeightMapping::Rescaled, WeightMapping::Proportional}) {
+    GrowthParams p;
+    p.weight_mapping = m;
+    EXPECT_EQ(expressed_weight(0.2, p), 0.0);
+    EXPECT_EQ(expressed_weight(-0.2, p), 0.0);
+    EXPECT_EQ(expressed_weight(0.19, p), 0.0);
+    EXPECT_EQ(expressed_weight(0.0, p), 0.0);
+    EXPECT_DOUBLE_EQ(expressed_weight(-1.0, p), -3.0) << "w = -1 gives -weight_max either way";
+    EXPECT_DOUBLE_EQ(expressed_weight(1.0, p), 3.0);
+  }
+}
+
+TEST(Weights, RescaledMappingStartsAtZeroAtTheThresholdAsHyperNeatDoes) {
+  const GrowthParams p;  // the default: rescaled, threshold 0.2, weight_max 3
+  ASSERT_EQ(p.weight_mapping, WeightMapping::Rescaled);
+  EXPECT_EQ(expressed_weight(0.21, p), (0.21 - 0.2) / (1 - 0.2) * 3.0);
+  EXPECT_EQ(expressed_weight(-0.21, p), (-0.21 + 0.2) / (1 - 0.2) * 3.0);
+  EXPECT_DOUBLE_EQ(expressed_weight(0.6, p), 1.5);
+  EXPECT_DOUBLE_EQ(expressed_weight(-0.6, p), -1.5);
+  // Continuous at the threshold: just above it the weight is close to 0.
+  EXPECT_LT(expressed_weight(0.2 + 1e-12, p), 1e-10);
+  EXPECT_GT(expressed_weight(0.2 + 1e-12, p), 0.0);
+  // Odd, and increasing in w.
+  for (double w = 0.25; w < 1.0; w += 0.05) {
+    EXPECT_DOUBLE_EQ(expressed_weight(-w, p), -expressed_weight(w, p));
+    EXPECT_LT(expressed_weight(w, p), expressed_weight(w + 0.05, p));
+  }
+}
+
+TEST(Weights, ProportionalMappingIsRobozoosEarlierOne) {
+  GrowthParams p;
+  p.weight_mapping = WeightMapping::Proportional;
+  EXPECT_DOUBLE_EQ(expressed_weight(0.21, p), 0.63) << "jumps from 0 to 0.6 at the threshold";
+  EXPECT_DOUBLE_EQ(expressed_weight(-0.6, p), -1.8);
+}
+
+TEST(Weights, RescaledMappingNeedsAThresholdBelowOne) {
+  GrowthParams p;
+  p.weight_threshold = 1.0;
+  EXPECT_THROW(validate_growth_params(p), std::invalid_argument);
+  p.weight_mapping = WeightMapping::Proportional;
+  EXPECT_NO_THROW(validate_growth_params(p));
 }
 
 TEST(Weights, NoNeuronsNoWeights) {

@@ -52,5 +52,25 @@ TEST(InnovationTracker, SameSplitInOneGenerationGetsTheSameNodeLinksAndActivatio
   EXPECT_EQ(t.next_innovation(), 54);
 }
 
+TEST(InnovationTracker, FreshSplitsOfTheSameLinkGetNewNumbersEachTime) {
+  InnovationTracker t(50, 30);
+  const auto a = t.fresh_split(0, 9, Activation::Gaussian);
+  const auto b = t.fresh_split(0, 9, Activation::SignedSigmoid);
+  EXPECT_EQ(a.node, 30);
+  EXPECT_EQ(a.in_link, 50);
+  EXPECT_EQ(a.out_link, 51);
+  EXPECT_EQ(a.activation, Activation::Gaussian);
+  EXPECT_EQ(b.node, 31) << "HyperNEAT: every split a new node";
+  EXPECT_EQ(b.in_link, 52);
+  EXPECT_EQ(b.out_link, 53);
+  EXPECT_EQ(b.activation, Activation::SignedSigmoid) << "each split keeps its own activation";
+  EXPECT_EQ(t.next_node_id(), 32);
+  EXPECT_EQ(t.next_innovation(), 54);
+  // The new links are this generation's link innovations: add-link of the same pair reuses them.
+  EXPECT_EQ(t.link(0, 30), a.in_link);
+  EXPECT_EQ(t.link(31, 9), b.out_link);
+  EXPECT_EQ(t.next_innovation(), 54);
+}
+
 }  // namespace
 }  // namespace robozoo

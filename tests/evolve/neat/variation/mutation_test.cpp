@@ -407,6 +407,38 @@ TEST(MutateAddNodeHyperNeat, KeepsTheLinkAtHalfWeightAndAddsOneAndAQuarter) {
   EXPECT_TRUE(in.enabled && out.enabled);
 }
 
+TEST(MutateAddNodeHyperNeat, EverySplitGetsNewNumbersEvenOfTheSameLink) {
+  // HyperNEAT's numbering (the default): many genomes of one generation split links of
+  // the same start; no two splits share a node id or a link innovation, whichever link
+  // they split. The same draws with shared numbers repeat node ids.
+  const GenomeLayout layout = test::tiny_layout(2);
+  for (AddNodeInnovations numbers : {AddNodeInnovations::Fresh, AddNodeInnovations::Shared}) {
+    NeatParams p;
+    ASSERT_EQ(NeatParams{}.add_node_innovations, AddNodeInnovations::Fresh);
+    p.add_node_innovations = numbers;
+    Rng rng(6);
+    InnovationTracker t(first_free_innovation(layout), layout.first_hidden());
+    std::set<int32_t> nodes;
+    std::set<int64_t> innovations;
+    const int genomes = 60;
+    for (int i = 0; i < genomes; ++i) {
+      Genome g = initial_genome(layout, i, p, Regime::FeedForward, rng);
+      ASSERT_TRUE(mutate_add_node(g, p, t, 1, rng));
+      validate_genome(g, layout);
+      nodes.insert(g.nodes.back().id);
+      for (const auto& l : g.links)
+        if (l.from == g.nodes.back().id || l.to == g.nodes.back().id) innovations.insert(l.innovation);
+    }
+    if (numbers == AddNodeInnovations::Fresh) {
+      EXPECT_EQ(nodes.size(), static_cast<size_t>(genomes));
+      EXPECT_EQ(innovations.size(), static_cast<size_t>(2 * genomes));
+      EXPECT_EQ(t.next_node_id(), layout.first_hidden() + genomes);
+    } else {
+      EXPECT_LT(nodes.size(), 10u) << "the same split, the same node";
+    }
+  }
+}
+
 TEST(MutateAddNodeHyperNeat, SplitsForwardLinksOnly) {
   const GenomeLayout layout = test::tiny_layout(2);
   const NeatParams p;
