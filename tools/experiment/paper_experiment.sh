@@ -4,6 +4,7 @@
 #   tools/experiment/paper_experiment.sh [--dir DIR] [--commit COMMIT] [--workers N]  # run (or resume) the milestones
 #   tools/experiment/paper_experiment.sh --collect [--dir DIR]                        # copy the compact results into the repository
 #   tools/experiment/paper_experiment.sh --status [--dir DIR]
+#   tools/experiment/paper_experiment.sh --save-checkpoints [--dir DIR]               # trials in progress -> the repository
 #
 # For a test of the script itself (the paper's sizes are the defaults):
 #   --bin BIN: robozoo-evolve and robozoo-experiment from BIN (no clone, no build, no VERSION);
@@ -24,11 +25,17 @@
 # report was made from; a milestone that finished on this machine (DIR/M1.done, ...) is
 # not run again. Stop it at any time (kill, or the machine stops); the same command
 # resumes where it stood: trials a milestone finished elsewhere count from their
-# committed compact results, the others start again from generation 0 where their
-# logs and checkpoints are not here.
+# committed compact results, trials in progress elsewhere continue from their committed
+# portable checkpoints (--save-checkpoints), the others start again from generation 0
+# where their logs and checkpoints are not here.
 # --collect copies each milestone's compact results into media/experiment/paper/ and
 # checks that each later milestone's trials repeat the earlier one's generations
 # (build/bin/robozoo-stats --same-as; exit 1 when one does not).
+# --save-checkpoints writes the portable checkpoint of each trial in progress of the
+# milestone being run (the first without DIR/M<n>.done) into the repository beside its
+# compact results (media/experiment/paper/checkpoints/, m2/checkpoints/, ...; 130-280 kB
+# a trial) and removes those of finished trials: commit them, and the run on a fresh
+# clone continues those trials from there instead of generation 0.
 # DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -56,7 +63,8 @@ while [ $# -gt 0 ]; do
     --generations) generations=${2:?--generations needs G1,G2,G3}; shift 2 ;;
     --collect) action=collect; shift ;;
     --status) action=status; shift ;;
-    -h|--help) sed -n '2,32p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --save-checkpoints) action=save; shift ;;
+    -h|--help) sed -n '2,39p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "paper_experiment.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -137,10 +145,25 @@ if [ -z "$bin" ]; then
 fi
 echo "paper_experiment.sh: robozoo $("$bin/robozoo-evolve" --version)"
 
+# A milestone's portable checkpoints in the repository: beside its results folder (results -> checkpoints).
+checkpoints_folder() { echo "$paper/${1%results}checkpoints"; }
 experiment_command() {  # arms, generations, results folder: sets cmd
   cmd=("$bin/robozoo-experiment" --out "$dir/runs" --results "$dir/$3" --trials "$trials" --population "$population"
-    --workers "$workers" --arms "$1" --generations "$2" ${steps:+--steps "$steps"})
+    --workers "$workers" --arms "$1" --generations "$2" ${steps:+--steps "$steps"}
+    --checkpoints "$(checkpoints_folder "$3")")
 }
+if [ "$action" = save ]; then
+  for m in "${milestones[@]}"; do
+    read -r name arms generations folder <<<"$m"
+    [ -e "$dir/$name.done" ] && continue
+    experiment_command "$arms" "$generations" "$folder"
+    echo "paper_experiment.sh: $name: portable checkpoints of its trials in progress -> $(checkpoints_folder "$folder")"
+    "${cmd[@]}" --save-checkpoints "$(checkpoints_folder "$folder")"
+    exit $?
+  done
+  echo "paper_experiment.sh: every milestone finished on this machine: no trial in progress"
+  exit 0
+fi
 if [ "$action" = status ]; then
   for m in "${milestones[@]}"; do
     read -r name arms generations folder <<<"$m"
