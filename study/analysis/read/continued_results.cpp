@@ -132,6 +132,13 @@ RunResults run_results_of_log(const std::string& log_path) {
 }
 
 RunResults run_results_up_to(const std::string& log_path, const Checkpoint& c) {
+  if (c.log_continues && c.log_bytes == 0) {
+    // Continued here, no generation finished yet: the earlier result is all there is.
+    RunResults r = read_run_results(earlier_results_path_for(log_path));
+    r.has_evolve_seconds = true;
+    r.evolve_seconds = c.elapsed_seconds;
+    return r;
+  }
   std::ifstream in(log_path, std::ios::binary);
   if (!in) throw std::runtime_error(log_path + ": cannot read the log");
   std::vector<uint8_t> bytes(static_cast<size_t>(c.log_bytes));

@@ -35,8 +35,9 @@ RunResults run_results_of_log(const std::string& log_path);
 
 /// The same for the generations the checkpoint `c` of that log holds: the
 /// first c.log_bytes bytes of the log (what follows is a generation not yet
-/// finished), with the checkpoint's wall time. std::runtime_error when the log
-/// is shorter than the checkpoint says.
+/// finished), with the checkpoint's wall time; for a log continued here that
+/// holds no generation yet, the earlier result alone. std::runtime_error when
+/// the log is shorter than the checkpoint says.
 RunResults run_results_up_to(const std::string& log_path, const Checkpoint& c);
 
 }  // namespace robozoo

@@ -79,6 +79,10 @@ TEST(PortableCheckpoint, ReadsBackWhatItHolds) {
   EXPECT_EQ(read_file(earlier_results_path_for(dir / "new/r.lcmlog")), p.results_text);
   // ... and not over a trial in progress.
   EXPECT_THROW(unpack_portable_checkpoint(q, dir / "new/r.lcmlog"), std::invalid_argument);
+  // Packed again before the continued run finished a generation: the same generations.
+  const PortableCheckpoint again = pack_portable_checkpoint(dir / "new/r.lcmlog");
+  EXPECT_EQ(again.generation, 2);
+  EXPECT_EQ(again.results_text, p.results_text);
 }
 
 TEST(PortableCheckpoint, RefusesDamage) {
