@@ -6,8 +6,9 @@
 // channel (and eval_result_t built from the logged genomes' results, bus_status_t
 // from the logged generations), a short
 // log of the run's first events, the configuration as JSON and as TOML, the
-// logged champions' genomes as genome JSON, and the checkpoint. Seeds are kept
-// small: libFuzzer's longest input defaults to the longest seed.
+// logged champions' genomes as genome JSON, the checkpoint, and the run as a
+// portable checkpoint. Seeds are kept small: libFuzzer's longest input defaults
+// to the longest seed.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -24,6 +25,7 @@
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/neat/population_json.hpp"
 #include "robozoo/eval_result_t.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 
 namespace fs = std::filesystem;
 using namespace robozoo;
@@ -198,6 +200,10 @@ int main(int argc, char** argv) {
     species_of.erase(species_of.begin() + std::min<size_t>(4, species_of.size()), species_of.end());
     for (auto& sp : pop.at("species")) cut_links(sp.at("representative"));
     write_file(out / "checkpoint" / "checkpoint.json", cp.dump() + "\n");
+    // The run as a portable checkpoint (its checkpoint and compact result, compressed): without a
+    // valid one to mutate, the fuzzer would hardly get past the format's checksums.
+    write_bytes(out / "portable_checkpoint" / "run.portable-checkpoint",
+                encode_portable_checkpoint(pack_portable_checkpoint(argv[1])));
     std::cout << "robozoo-fuzz-corpus: seeds in " << out.string() << " from " << log.records.size() << " events\n";
     return 0;
   } catch (const std::exception& e) {

@@ -63,7 +63,7 @@ void write_file_atomic(const std::string& path, const std::string& text) {
   }
 }
 
-void write_checkpoint(const std::string& path, const Checkpoint& c) {
+std::string checkpoint_to_text(const Checkpoint& c) {
   nlohmann::json j;
   j["format"] = "robozoo-checkpoint";
   j["format_version"] = Checkpoint::kFormatVersion;
@@ -79,8 +79,11 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   j["log_events"] = c.log_events;
   j["elapsed_seconds"] = c.elapsed_seconds;
   j["finished"] = c.finished;
-  write_file_atomic(path, j.dump());
+  if (c.log_continues) j[kLogContinuesKey] = log_continuation_to_json(*c.log_continues);
+  return j.dump();
 }
+
+void write_checkpoint(const std::string& path, const Checkpoint& c) { write_file_atomic(path, checkpoint_to_text(c)); }
 
 Checkpoint read_checkpoint(const std::string& path) {
   std::ifstream in(path);
@@ -118,6 +121,8 @@ Checkpoint checkpoint_from_text(const std::string& text, const std::string& path
     c.log_events = as_i64(field(j, "log_events", p), p + ".log_events");
     c.elapsed_seconds = as_double(field(j, "elapsed_seconds", p), p + ".elapsed_seconds");
     c.finished = as_bool(field(j, "finished", p), p + ".finished");
+    if (j.contains(kLogContinuesKey))
+      c.log_continues = log_continuation_from_json(j.at(kLogContinuesKey), p + "." + kLogContinuesKey);
     if (c.log_bytes < 0 || c.log_events < 0 || c.evaluations < 0) throw std::runtime_error("negative counts");
     return c;
   } catch (const std::exception& e) {

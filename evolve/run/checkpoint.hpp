@@ -3,10 +3,12 @@
 // temporary file, fsync, rename) after every generation, so that a run killed at
 // any moment resumes exactly (docs/method.md section 4).
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "evolve/messages/log_continuation.hpp"
 #include "evolve/neat/population.hpp"
 
 namespace robozoo {
@@ -27,11 +29,18 @@ struct Checkpoint {
   int64_t log_events = 0;           ///< events in the log after the last finished generation
   double elapsed_seconds = 0.0;     ///< wall time spent so far (s)
   bool finished = false;            ///< every generation done
+  /// Set when the run's log begins at a later generation than 0 (a run continued
+  /// from a portable checkpoint on a machine without its log): every run message
+  /// of the log says so (log_continuation.hpp). Written as "log_continues" only
+  /// when set, so a checkpoint of a log that starts at generation 0 is as before.
+  std::optional<LogContinuation> log_continues;
 };
 
 /// Where the checkpoint of the run logged at `log_path` lives: beside it, `log_path` + ".checkpoint".
 std::string checkpoint_path_for(const std::string& log_path);
 
+/// The checkpoint's text, as write_checkpoint writes it.
+std::string checkpoint_to_text(const Checkpoint& c);
 /// Writes atomically: `path` holds either the old or the new checkpoint, never a mix.
 void write_checkpoint(const std::string& path, const Checkpoint& c);
 /// Throws std::runtime_error naming the path for a missing, unreadable or malformed file.

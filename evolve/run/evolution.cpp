@@ -121,6 +121,7 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     evaluations_ = c.evaluations;
     best_so_far_ = c.best_so_far;
     last_champion_hash_ = c.last_champion_hash;
+    log_continues_ = c.log_continues;
     elapsed_before_ = c.elapsed_seconds;
     finished_ = c.finished && !extend_finished;
     resumed_ = true;
@@ -143,7 +144,12 @@ Evolution::Evolution(const RunConfig& config, const EvolveOptions& options, Eval
     checkpoint_writer_ =
         std::make_unique<CheckpointWriter>(checkpoint_path_, options_.background_checkpoint, generations_done());
     if (!finished_) {
-      log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
+      // A run continued on a machine without its log starts a new one (its
+      // checkpoint, unpacked from a portable one, says the log holds nothing yet).
+      if (log_continues_ && c.log_bytes == 0 && !file_exists(options_.log_path))
+        log_.emplace(EventLogWriter::create(options_.log_path));
+      else
+        log_.emplace(EventLogWriter::resume(options_.log_path, c.log_bytes, c.log_events));
       // Stamps run ahead of the clock while messages wait for their turn: the
       // log's go on from its last one, never back.
       const int64_t last = timestamp_of_event_ending_at(options_.log_path, c.log_bytes);
@@ -203,6 +209,7 @@ Checkpoint Evolution::make_checkpoint() {
   c.log_events = log_->events();
   c.elapsed_seconds = elapsed_before_ + elapsed_;
   c.finished = finished_;
+  c.log_continues = log_continues_;
   return c;
 }
 
@@ -265,7 +272,8 @@ std::vector<EvalSummary> Evolution::evaluate_generation(const std::vector<Genome
   auto tm = std::chrono::steady_clock::now();
   const auto emit_run = [&] {
     tm = std::chrono::steady_clock::now();
-    emit_message(kChannelRun, make_run_message(run_id_, config_, 0));
+    const run_t run = make_run_message(run_id_, config_, 0);
+    emit_message(kChannelRun, log_continues_ ? mark_continued(run, *log_continues_) : run);
     timing.messages += seconds_since(tm);
   };
   // With the previous generation's champion still simulating, its poses come

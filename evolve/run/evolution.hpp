@@ -194,8 +194,9 @@ class Evolution {
   int64_t bus_statuses_ = 0;  // ROBOZOO_BUS messages sent (not counted as published run messages)
   int64_t bus_status_bytes_ = 0;
   double best_so_far_ = 0.0;
-  uint64_t last_champion_hash_ = 0;  // content hash (id aside) of the last champion
-  double elapsed_before_ = 0.0;      // from earlier sessions of a resumed run
+  uint64_t last_champion_hash_ = 0;               // content hash (id aside) of the last champion
+  std::optional<LogContinuation> log_continues_;  // the log begins at a later generation (checkpoint.hpp)
+  double elapsed_before_ = 0.0;                   // from earlier sessions of a resumed run
   double elapsed_ = 0.0;
   bool finished_ = false;
   bool resumed_ = false;

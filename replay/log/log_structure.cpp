@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "evolve/messages/build.hpp"
+#include "evolve/messages/log_continuation.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/run/trajectory.hpp"
 #include "evolve/sim/episode/outcome.hpp"
@@ -165,6 +166,17 @@ class Checker {
     if (s.phase == Phase::Start) {
       s.first = m;
       s.phase = Phase::AfterRun;
+      // A log continued from a portable checkpoint begins at its generation, with the run's state then.
+      try {
+        if (const auto c = split_run_config(m.config_json).continues) {
+          s.next_generation = c->from_generation;
+          s.evaluations = c->evaluations_before;
+          s.best_so_far = c->best_so_far_before;
+          s.last_key = c->last_champion_key;
+        }
+      } catch (const std::invalid_argument&) {
+        // Reported where the configuration is read (logged_config).
+      }
       return;
     }
     if (s.phase == Phase::AfterRun) {

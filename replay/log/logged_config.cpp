@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "evolve/messages/build.hpp"
+#include "evolve/messages/log_continuation.hpp"
 
 namespace robozoo::replay {
 
@@ -30,7 +31,8 @@ RunConfig config_from_run_message(const run_t& m) {
   const std::string run = "run " + m.run_id + ": ";
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(m.config_json);
+    // A log continued from a portable checkpoint: its configuration without the continuation.
+    j = nlohmann::json::parse(split_run_config(m.config_json).config_json);
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(run + "its configuration (run_t.config_json) is not JSON: " + e.what());
   }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evolve/config/run_config.hpp"
+#include "evolve/messages/log_continuation.hpp"
 #include "evolve/sim/episode/simulation.hpp"
 #include "evolve/sim/episode/trajectory_sampler.hpp"
 #include "runlog/robots/regrow.hpp"
@@ -54,7 +55,7 @@ Trajectory simulate_trajectory(const run_t& run, const cppn_genome_t& genome, co
   if (every < 1) throw std::invalid_argument("simulate_trajectory: every must be >= 1");
   RunConfig config;
   try {
-    config = config_from_record(nlohmann::json::parse(run.config_json));
+    config = config_from_record(nlohmann::json::parse(split_run_config(run.config_json).config_json));
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument("run " + run.run_id + ": its configuration is not JSON: " + e.what());
   }
@@ -94,7 +95,7 @@ const GenomeRecord* logged_pose_source(const RunRecord& run, const GenomeRecord&
 
 Eigen::Vector3d run_target(const run_t& run) {
   try {
-    const RunConfig c = config_from_record(nlohmann::json::parse(run.config_json));
+    const RunConfig c = config_from_record(nlohmann::json::parse(split_run_config(run.config_json).config_json));
     return {c.eval.sim.target_x, c.eval.sim.target_y, c.eval.sim.target_z};
   } catch (const std::exception& e) {
     throw std::invalid_argument("run " + run.run_id + ": cannot read its configuration: " + e.what());

@@ -4,6 +4,7 @@
 #   tools/experiment/paper_experiment.sh [--dir DIR] [--workers N]  # run (or resume) the milestones
 #   tools/experiment/paper_experiment.sh --collect [--dir DIR]      # copy the compact results into the repository
 #   tools/experiment/paper_experiment.sh --status [--dir DIR]
+#   tools/experiment/paper_experiment.sh --save-checkpoints [--dir DIR]               # trials in progress -> the repository
 #
 # For a test of the script itself (the paper's sizes are the defaults):
 #   --bin BIN: robozoo-evolve and robozoo-experiment from BIN (no clone, no build, no VERSION);
@@ -40,10 +41,17 @@
 # its compact result in the repository is not run at all (nothing is built for it). Stop it
 # at any time (kill, or the machine stops); the same command resumes where it stood: trials
 # a milestone finished elsewhere count from their committed compact results, the others
+# continue from their committed portable checkpoints (--save-checkpoints) and the others
 # start again from generation 0 where their logs and checkpoints are not here.
 # --collect copies each milestone's compact results into media/experiment/paper/ and
 # checks that each continued milestone's trials repeat the one they continue (M2 M1's, M3-100
 # M3's, ...: build/bin/robozoo-stats --same-as; exit 1 when one does not).
+# --save-checkpoints writes the portable checkpoint of each trial in progress of the
+# milestone being run (the first without DIR/<name>.done whose results are not all
+# committed) into the repository beside its compact results (checkpoints/ for M1,
+# m3/checkpoints/, sensitivity/<factor>/checkpoints/, ...; 130-280 kB a trial) and removes
+# those of finished trials: commit them, and the run on a fresh clone continues those
+# trials from there instead of generation 0.
 # DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -71,7 +79,8 @@ while [ $# -gt 0 ]; do
     --generations) generations=${2:?--generations needs G1,G2,G3,GS,G4,G5,G6}; shift 2 ;;
     --collect) action=collect; shift ;;
     --status) action=status; shift ;;
-    -h|--help) sed -n '2,47p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --save-checkpoints) action=save; shift ;;
+    -h|--help) sed -n '2,55p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "paper_experiment.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -176,15 +185,35 @@ use_version() {
 }
 fixed_bin=$bin
 
+# A milestone's portable checkpoints in the repository: beside its results folder (results -> checkpoints).
+checkpoints_folder() { echo "$paper/${1%results}checkpoints"; }
 experiment_command() {  # runs folder, arms, generations, trials, results folder, sets: sets cmd
   cmd=("$bin/robozoo-experiment" --out "$dir/$1" --results "$dir/$5" --trials "$4" --population "$population"
-    --workers "$workers" --arms "$2" --generations "$3" ${steps:+--steps "$steps"})
+    --workers "$workers" --arms "$2" --generations "$3" ${steps:+--steps "$steps"}
+    --checkpoints "$(checkpoints_folder "$5")")
   local kv
   if [ "$6" != - ]; then
     IFS=, read -r -a assignments <<<"$6"
     for kv in "${assignments[@]}"; do cmd+=(--set "$kv"); done
   fi
 }
+if [ "$action" = save ]; then
+  for m in "${milestones[@]}"; do
+    read -r name version runs arms gens ntrials folder sets _ <<<"$m"
+    [ -e "$dir/$name.done" ] && continue
+    IFS=, read -r -a arm_list <<<"$arms"
+    if [ "$(find "$paper/$folder" -maxdepth 1 -name '*.results.json' 2>/dev/null | wc -l)" -ge $((${#arm_list[@]} * ntrials)) ]; then
+      continue
+    fi
+    use_version "$version"
+    experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
+    echo "paper_experiment.sh: $name: portable checkpoints of its trials in progress -> $(checkpoints_folder "$folder")"
+    "${cmd[@]}" --save-checkpoints "$(checkpoints_folder "$folder")"
+    exit $?
+  done
+  echo "paper_experiment.sh: every milestone finished on this machine: no trial in progress"
+  exit 0
+fi
 if [ "$action" = status ]; then
   for m in "${milestones[@]}"; do
     read -r name version runs arms gens ntrials folder sets _ <<<"$m"

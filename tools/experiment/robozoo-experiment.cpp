@@ -5,8 +5,11 @@
 // and started again at any time: finished trials are skipped, a stopped one is
 // resumed from its checkpoint, the others are started; --generations above the
 // trials' own extends them from their checkpoints. Each finished trial leaves its
-// compact result (study/analysis/read/run_results.hpp) in --results. Prints progress
-// across the whole experiment with an estimated finish time. Then: robozoo-stats DIR.
+// compact result (study/analysis/read/run_results.hpp) in --results. Trials in
+// progress travel to another machine as portable checkpoints
+// (study/experiment/portable_checkpoint.hpp): --save-checkpoints DIR writes them,
+// --checkpoints DIR continues from them. Prints progress across the whole
+// experiment with an estimated finish time. Then: robozoo-stats DIR.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -23,8 +26,10 @@
 #include "evolve/config/run_config.hpp"
 #include "evolve/core/version.hpp"
 #include "evolve/run/checkpoint.hpp"
+#include "study/analysis/read/continued_results.hpp"
 #include "study/analysis/read/run_results.hpp"
 #include "study/experiment/child_process.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 #include "study/experiment/progress_estimate.hpp"
 #include "study/experiment/trial_plan.hpp"
 #include "study/experiment/trial_status.hpp"
@@ -97,7 +102,7 @@ bool write_trial_results(const Trial& t, const std::string& path, int generation
       const RunResults old = read_run_results(path);
       if (old.run.complete() && old.run.generations_requested == generations) return true;
     }
-    const RunResults r = results_from_log(t.log_path);
+    const RunResults r = run_results_of_log(t.log_path);
     if (!r.run.complete()) {
       std::cerr << "robozoo-experiment: " << t.log_path << " lacks generations (" << r.run.generations.size() << " of "
                 << r.run.generations_requested << "): no compact result written\n";
@@ -131,9 +136,11 @@ void print_status(const Experiment& e) {
 /// What the command line asks for, besides the experiment's parameters.
 struct Options {
   ExperimentParams params;
-  std::string evolve;             ///< the robozoo-evolve program; empty: the one beside this program
-  std::string results_dir;        ///< the trials' compact results; empty: OUT/results
-  std::string mpirun = "mpirun";  ///< the MPI launcher with its options, split at spaces
+  std::string evolve;                ///< the robozoo-evolve program; empty: the one beside this program
+  std::string results_dir;           ///< the trials' compact results; empty: OUT/results
+  std::string mpirun = "mpirun";     ///< the MPI launcher with its options, split at spaces
+  std::string checkpoints_dir;       ///< portable checkpoints to continue trials from; empty: none
+  std::string save_checkpoints_dir;  ///< write the portable checkpoints of trials in progress here, and exit
   bool status_only = false;
   bool force = false;
   double progress_interval = 5.0;  ///< seconds between progress lines
@@ -195,6 +202,15 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
   app.add_option("--progress-interval", progress_interval,
                  "seconds between progress lines (at most one per generation)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--checkpoints", o.checkpoints_dir,
+                 "folder of portable checkpoints (<trial>.portable-checkpoint, from --save-checkpoints on another "
+                 "machine): a trial with neither log nor checkpoint in --out, and no compact result that reached "
+                 "--generations, continues from its portable checkpoint there, in a new log that begins at its "
+                 "generation (a missing folder holds none)");
+  app.add_option("--save-checkpoints", o.save_checkpoints_dir,
+                 "write the portable checkpoint of each trial in progress in --out into this folder "
+                 "(<trial>.portable-checkpoint: its checkpoint and its compact result so far, compressed, to commit), "
+                 "remove those of finished trials, and exit; safe while the experiment runs");
   app.add_flag("--status", status_only, "print where each trial stands and exit");
   app.add_flag("--force", force,
                "resume or extend trials whose checkpoints another robozoo version wrote (robozoo-evolve --resume "
@@ -217,6 +233,10 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     return 2;
   }
   if (results_dir.empty()) results_dir = p.out_dir + "/results";
+  if (status_only && !o.save_checkpoints_dir.empty()) {
+    std::cerr << "robozoo-experiment: --status and --save-checkpoints are two actions; give one\n";
+    return 2;
+  }
   return std::nullopt;
 }
 
@@ -224,40 +244,66 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
 /// checkpoint in --out, or, with neither there, from its compact result in
 /// --results (`from_results`: done according to that result alone). Throws
 /// std::invalid_argument for a result that cannot stand for its trial.
-Experiment plan_experiment(const Options& o, std::vector<bool>& from_results) {
+Experiment plan_experiment(const Options& o, std::vector<bool>& from_results, std::vector<std::string>& from_portable) {
   const ExperimentParams& p = o.params;
   const std::string& results_dir = o.results_dir;
   Experiment e;
   e.params = p;
   e.trials = plan_trials(p);
   from_results.clear();
+  from_portable.clear();
   for (const auto& t : e.trials) {
     e.status.push_back(trial_status(t, p));
     from_results.push_back(false);
+    from_portable.emplace_back();
     const std::string rp = results_path(results_dir, t);
-    if (e.status.back().state != TrialState::NotStarted || !std::filesystem::exists(rp)) continue;
+    if (e.status.back().state != TrialState::NotStarted) continue;
+    const bool has_results = std::filesystem::exists(rp);
+    const std::string pp = o.checkpoints_dir.empty() ? "" : portable_checkpoint_path(o.checkpoints_dir, t);
+    const bool has_portable = !pp.empty() && std::filesystem::exists(pp);
+    if (!has_results && !has_portable) continue;
+    std::optional<RunResults> r;
     // No log, no checkpoint, but a compact result (e.g. an experiment continued on another machine).
-    const RunResults r = read_run_results(rp);
-    if (r.run.run_id != t.name() || r.run.population != p.population)
-      throw std::invalid_argument(rp + " is the result of run " + r.run.run_id + " with population " +
-                                  std::to_string(r.run.population) + ", not of trial " + t.name() +
+    if (has_results) r = read_run_results(rp);
+    if (r && (r->run.run_id != t.name() || r->run.population != p.population))
+      throw std::invalid_argument(rp + " is the result of run " + r->run.run_id + " with population " +
+                                  std::to_string(r->run.population) + ", not of trial " + t.name() +
                                   " with population " + std::to_string(p.population));
-    const std::string sets = sets_mismatch(nlohmann::json::parse(r.run.config_json, nullptr, false), p.sets);
+    const bool result_done = r && r->run.complete() && r->run.generations_requested >= p.generations;
+    if (!result_done && has_portable) {
+      // In progress on another machine: continued from its portable checkpoint.
+      const PortableCheckpoint pc = read_portable_checkpoint(pp);
+      const std::string why = portable_refusal(pc, pp, t, p, o.force);
+      if (!why.empty()) throw std::invalid_argument(why);
+      const int32_t planned = pc.checkpoint.config.value("generations", 0);
+      if (planned > p.generations)
+        throw std::invalid_argument(pp + " holds " + t.name() + " started for " + std::to_string(planned) +
+                                    " generations; continue it with --generations " + std::to_string(planned));
+      TrialStatus& s = e.status.back();
+      s.state = TrialState::Partial;
+      s.generations_done = pc.generation;
+      s.elapsed_seconds = pc.checkpoint.elapsed_seconds;
+      from_portable.back() = pp;
+      continue;
+    }
+    if (!r) continue;
+    const std::string sets = sets_mismatch(nlohmann::json::parse(r->run.config_json, nullptr, false), p.sets);
     if (!sets.empty())
       throw std::invalid_argument(rp + " belongs to another experiment: it was run with " + sets +
                                   " (use another --results folder, or the --set it was run with)");
-    if (!r.run.complete() || r.run.generations_requested < p.generations)
-      throw std::invalid_argument(rp + " holds " + t.name() + " at " + std::to_string(r.run.generations.size()) +
-                                  " generations, but its log and checkpoint are not in " + p.out_dir +
-                                  ": it cannot be extended to " + std::to_string(p.generations) +
-                                  " (copy <trial>.lcmlog and its .checkpoint there)");
+    if (!result_done)
+      throw std::invalid_argument(
+          rp + " holds " + t.name() + " at " + std::to_string(r->run.generations.size()) +
+          " generations, but its log and checkpoint are not in " + p.out_dir + ": it cannot be extended to " +
+          std::to_string(p.generations) +
+          " (copy <trial>.lcmlog and its .checkpoint there, or its portable checkpoint into --checkpoints)");
     TrialStatus& s = e.status.back();
     s.state = TrialState::Finished;
     s.generations_done = p.generations;
     // Its time, for the estimate: the run's, pro rata when it ran further than asked.
-    s.time_known = r.has_evolve_seconds && !r.run.generations.empty();
+    s.time_known = r->has_evolve_seconds && !r->run.generations.empty();
     if (s.time_known)
-      s.elapsed_seconds = r.evolve_seconds * p.generations / static_cast<double>(r.run.generations.size());
+      s.elapsed_seconds = r->evolve_seconds * p.generations / static_cast<double>(r->run.generations.size());
     from_results.back() = true;
   }
   return e;
@@ -325,10 +371,27 @@ bool write_missing_results(const Experiment& e, const std::vector<bool>& from_re
 /// stops the experiment, printing progress. Nothing when it finished (its
 /// compact result written, `results_ok` cleared if that failed), else the
 /// program's exit status.
-std::optional<int> run_trial(Experiment& e, size_t i, const Options& o, const SignalBlock& block, bool& results_ok) {
+std::optional<int> run_trial(Experiment& e, size_t i, const Options& o, const std::string& portable,
+                             const SignalBlock& block, bool& results_ok) {
   const ExperimentParams& p = o.params;
   const Trial& t = e.trials[i];
   const bool resume = e.status[i].state == TrialState::Partial;
+  if (!portable.empty()) {
+    // Read again (it was checked when planning): its checkpoint and earlier result go beside the new log.
+    try {
+      const PortableCheckpoint pc = read_portable_checkpoint(portable);
+      const std::string why = portable_refusal(pc, portable, t, p, o.force);
+      if (!why.empty()) throw std::invalid_argument(why);
+      unpack_portable_checkpoint(pc, t.log_path);
+    } catch (const std::exception& ex) {
+      std::cerr << "robozoo-experiment: " << ex.what() << "\n";
+      return 2;
+    }
+    std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name()
+              << ": continues from the portable checkpoint " << portable << " (generations 0-"
+              << e.status[i].generations_done - 1 << " in its compact result, a new log from generation "
+              << e.status[i].generations_done << ")" << std::endl;
+  }
   std::cerr << "[" << i + 1 << "/" << e.trials.size() << "] " << t.name() << ": "
             << (resume ? "resuming after generation " + std::to_string(e.status[i].generations_done) + " (to " +
                              std::to_string(p.generations) + ")"
@@ -407,6 +470,51 @@ std::optional<int> run_trial(Experiment& e, size_t i, const Options& o, const Si
   }
 }
 
+/// --save-checkpoints: the portable checkpoint of each trial in progress in
+/// --out into `dir`, none for finished trials (their compact results count).
+/// A file there that holds more generations than the trial here is kept.
+/// Returns the exit status.
+int save_portable_checkpoints(const Experiment& e, const std::vector<std::string>& from_portable,
+                              const std::string& dir) {
+  int status = 0, written = 0, removed = 0;
+  for (size_t i = 0; i < e.trials.size(); ++i) {
+    const Trial& t = e.trials[i];
+    const TrialStatus& s = e.status[i];
+    const std::string path = portable_checkpoint_path(dir, t);
+    try {
+      if (s.state == TrialState::Finished) {
+        if (std::filesystem::remove(path)) {
+          std::cerr << "  " << t.name() << ": finished; removed " << path << "\n";
+          ++removed;
+        }
+        continue;
+      }
+      // Not started here, or known only from a portable checkpoint: nothing newer to write.
+      if (s.state != TrialState::Partial || !from_portable[i].empty() || s.generations_done < 1) continue;
+      const PortableCheckpoint pc = pack_portable_checkpoint(t.log_path);
+      if (std::filesystem::exists(path)) {
+        const PortableCheckpoint old = read_portable_checkpoint(path);
+        if (old.generation > pc.generation) {
+          std::cerr << "  " << t.name() << ": kept " << path << " (generation " << old.generation
+                    << "; the trial here is at " << pc.generation << ")\n";
+          continue;
+        }
+      }
+      std::filesystem::create_directories(dir);
+      write_portable_checkpoint(path, pc);
+      ++written;
+      std::cerr << "  " << t.name() << ": generation " << pc.generation << ", " << path << " ("
+                << std::filesystem::file_size(path) << " bytes)\n";
+    } catch (const std::exception& ex) {
+      std::cerr << "robozoo-experiment: " << t.name() << ": " << ex.what() << "\n";
+      status = 1;
+    }
+  }
+  std::cerr << "robozoo-experiment: " << written << " portable checkpoints written, " << removed << " removed, in "
+            << dir << std::endl;
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -414,8 +522,9 @@ int main(int argc, char** argv) {
   if (const std::optional<int> status = parse_command_line(argc, argv, o)) return *status;
   Experiment e;
   std::vector<bool> from_results;
+  std::vector<std::string> from_portable;
   try {
-    e = plan_experiment(o, from_results);
+    e = plan_experiment(o, from_results, from_portable);
   } catch (const std::exception& ex) {
     std::cerr << "robozoo-experiment: " << ex.what() << "\n";
     return 2;
@@ -424,6 +533,7 @@ int main(int argc, char** argv) {
     print_status(e);
     return 0;
   }
+  if (!o.save_checkpoints_dir.empty()) return save_portable_checkpoints(e, from_portable, o.save_checkpoints_dir);
   // Both programs are checked before the folder is made: a refused start leaves nothing behind.
   if (!find_programs(o, e)) return 2;
   try {
@@ -443,7 +553,7 @@ int main(int argc, char** argv) {
   SignalBlock block;
   for (size_t i = 0; i < e.trials.size(); ++i) {
     if (e.status[i].state == TrialState::Finished) continue;
-    if (const std::optional<int> status = run_trial(e, i, o, block, results_ok)) return *status;
+    if (const std::optional<int> status = run_trial(e, i, o, from_portable[i], block, results_ok)) return *status;
   }
   std::cerr << "robozoo-experiment: all " << e.trials.size() << " trials finished (robozoo-evolve time "
             << format_duration(e.totals().seconds_spent) << "), compact results in " << o.results_dir

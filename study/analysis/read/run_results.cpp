@@ -134,6 +134,7 @@ RunSummary compact_summary(const RunSummary& full) {
   s.steps = full.steps;
   s.dt = full.dt;
   s.config_json = full.config_json;
+  s.continues = full.continues;
   s.generations = full.generations;
   s.undecodable = full.undecodable;
   s.truncated = full.truncated;

@@ -8,6 +8,7 @@
 #include "evolve/config/run_config.hpp"
 #include "study/experiment/trial_plan.hpp"
 #include "evolve/messages/build.hpp"
+#include "evolve/messages/log_continuation.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "runlog/read/log_reader.hpp"
 
@@ -62,7 +63,15 @@ RunSummary summarize_run(const LogContents& log, const std::string& path) {
       s.generations_requested = m.generations;
       s.steps = m.steps;
       s.dt = m.dt;
-      s.config_json = m.config_json;
+      try {
+        // A log continued from a portable checkpoint says so in its configuration text; what is
+        // compared is the configuration without it (log_continuation.hpp).
+        SplitRunConfig split = split_run_config(m.config_json);
+        s.config_json = std::move(split.config_json);
+        s.continues = split.continues;
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(path + ": " + e.what());
+      }
     } else if (r.channel == kChannelGeneration) {
       generation_t m;
       if (!safe_decode(r.data.data(), r.data.size(), m)) {

@@ -8,10 +8,12 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "evolve/io/event_log.hpp"
+#include "evolve/messages/log_continuation.hpp"
 #include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/morphology_t.hpp"
 
@@ -45,16 +47,20 @@ struct RunSummary {
   std::string run_id;
   std::string software_version;
   int64_t seed = 0;
-  int8_t regime = 0;                          ///< 0 feed-forward, 1 recurrent (run_t)
-  std::string arm = "feedforward";            ///< the experiment arm of its configuration (arm_of)
-  int32_t max_spheres = 0;                    ///< growth.max_spheres of its configuration (count; 0 if unknown)
-  double max_d = 0;                           ///< the largest d term of any logged genome (m)
-  double target_distance = 0;                 ///< distance from the origin to the target (m; 0 if unknown)
-  int32_t population = 0;                     ///< genomes per generation (count)
-  int32_t generations_requested = 0;          ///< generations the run was started for (count)
-  int32_t steps = 0;                          ///< physics steps per evaluation (count)
-  double dt = 0;                              ///< physics step (s)
-  std::string config_json;                    ///< the resolved configuration of its last run_t (JSON text)
+  int8_t regime = 0;                  ///< 0 feed-forward, 1 recurrent (run_t)
+  std::string arm = "feedforward";    ///< the experiment arm of its configuration (arm_of)
+  int32_t max_spheres = 0;            ///< growth.max_spheres of its configuration (count; 0 if unknown)
+  double max_d = 0;                   ///< the largest d term of any logged genome (m)
+  double target_distance = 0;         ///< distance from the origin to the target (m; 0 if unknown)
+  int32_t population = 0;             ///< genomes per generation (count)
+  int32_t generations_requested = 0;  ///< generations the run was started for (count)
+  int32_t steps = 0;                  ///< physics steps per evaluation (count)
+  double dt = 0;                      ///< physics step (s)
+  std::string config_json;            ///< the resolved configuration of its last run_t (JSON text,
+                                      ///< without a log continuation: log_continuation.hpp)
+  /// Set when the log begins at a later generation than 0 (continued from a portable
+  /// checkpoint; its earlier generations are in the run's earlier compact result).
+  std::optional<LogContinuation> continues;
   std::vector<GenerationRecord> generations;  ///< in generation order, one per logged generation
   std::vector<ChampionRecord> champions;      ///< in generation order, one per generation whose champion was logged
   /// Per genome id with a logged pose stream: the lowest centre height of each sphere over the stream (m).
