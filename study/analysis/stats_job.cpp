@@ -19,6 +19,7 @@
 #include "util/run_program.hpp"
 #include "study/experiment/progress_estimate.hpp"
 #include "util/program_path.hpp"
+#include "util/shell_word.hpp"
 
 namespace fs = std::filesystem;
 
@@ -354,17 +355,6 @@ void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out
     }
     rep.zoo.push_back(z);
   }
-}
-
-/// `w` as one shell word: as it is when it needs no quoting, else in single quotes.
-std::string shell_word(const std::string& w) {
-  const bool plain = !w.empty() && std::all_of(w.begin(), w.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("/._-+,=:@%", c) != nullptr;
-  });
-  if (plain) return w;
-  std::string q = "'";
-  for (char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
 }
 
 /// The robozoo-stats command that makes this report again (its files, in the same folder).

@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "study/analysis/read/results_agreement.hpp"
+#include "study/analysis/sensitivity/sensitivity_job.hpp"
 #include "study/analysis/stats_job.hpp"
 #include "evolve/core/version.hpp"
 #include "util/exit_status.hpp"
@@ -29,7 +30,12 @@ int main(int argc, char** argv) {
       "--export-results OUT writes the compact results of DIR's logs into OUT instead of a report.\n"
       "--same-as OTHER checks that each trial whose compact result is in both DIR and OTHER (e.g. one run to\n"
       "generation 30, one to 60) agrees over the generations both hold, field for field, instead of a report:\n"
-      "exit 0 when all agree, 1 at any difference (named: trial, generation, field) or when none is in both."};
+      "exit 0 when all agree, 1 at any difference (named: trial, generation, field) or when none is in both.\n"
+      "--sensitivity REFERENCE reads DIR as a sensitivity study (DIR/<factor>/results/: one factor changed from\n"
+      "REFERENCE's configuration, on REFERENCE's seeds) and writes, instead of the paper's report, each factor's\n"
+      "gap (control minus experimental best-so-far fitness at --generation) beside REFERENCE's gap on the same\n"
+      "seeds, Holm's correction across the factors, and the outcome shares (report.md, sensitivity*.csv; --out\n"
+      "default DIR)."};
   StatsOptions o;
   bool no_plots = false, no_zoo = false;
   app.add_option("DIR", o.log_dir, "folder of the runs' logs, or of their compact results")->required();
@@ -41,6 +47,17 @@ int main(int argc, char** argv) {
   app.add_option("--same-as", same_as,
                  "compare DIR's compact results with OTHER's (a folder of compact results), and no report")
       ->excludes("--export-results");
+  std::string sensitivity_of;
+  app.add_option("--sensitivity", sensitivity_of,
+                 "read DIR as a sensitivity study against REFERENCE (a folder of compact results), and write its "
+                 "report")
+      ->excludes("--export-results")
+      ->excludes("--same-as");
+  int generation = 0;
+  app.add_option("--generation", generation,
+                 "with --sensitivity: compare best-so-far fitness after this many generations (default: the "
+                 "factors' runs' length)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--out,-o", o.out_dir, "output folder (default: DIR/stats)");
   app.add_flag("--include-unfinished", o.include_unfinished,
                "also use runs that did not reach their last generation (default: left out, and listed)");
@@ -85,6 +102,32 @@ int main(int argc, char** argv) {
   o.plots = !no_plots;
   o.zoo = !no_zoo;
   o.analysis.changes.simulated_only = !all_changes;
+  if (generation != 0 && sensitivity_of.empty()) {
+    std::cerr << "robozoo-stats: --generation belongs to --sensitivity\n";
+    return 2;
+  }
+  if (!sensitivity_of.empty()) {
+    return exit_status_of("robozoo-stats", [&] {
+      SensitivityOptions s;
+      s.factors_dir = o.log_dir;
+      s.reference_dir = sensitivity_of;
+      s.out_dir = o.out_dir;
+      s.generation = generation;
+      s.alpha = o.alpha;
+      s.control_arm = o.control_arm;
+      s.experimental_arm = o.experimental_arm;
+      if (app.count("--title") > 0) s.title = o.title;
+      s.notes = o.notes;
+      const SensitivityOutcome r = run_sensitivity(s, std::cerr);
+      std::cerr << "robozoo-stats: " << r.analysis.factors.size() << " factors compared at generation "
+                << r.analysis.params.generation;
+      if (!r.waiting.empty()) std::cerr << ", " << r.waiting.size() << " without results yet";
+      std::cerr << "\n  wrote";
+      for (const auto& f : r.files) std::cerr << " " << f;
+      std::cerr << "\n  in " << r.out_dir << "\n";
+      return 0;
+    });
+  }
   if (!same_as.empty()) {
     return exit_status_of("robozoo-stats", [&] {
       const FolderAgreement f = compare_results_folders(o.log_dir, same_as);

@@ -169,6 +169,11 @@ std::string format_mean_se(const SampleStats& s, double scale) {
   return fmt(m, d) + " ± " + fmt(se, d);
 }
 
+std::string format_number(double v) {
+  if (std::isnan(v)) return "n/a";
+  return fmt(v, digits_for(v));
+}
+
 std::string format_p(double p) {
   if (std::isnan(p)) return "n/a";
   if (p < 0.001) return "< 0.001";

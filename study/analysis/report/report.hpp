@@ -36,6 +36,9 @@ std::string markdown_report(const ReportInputs& in);
 
 /// "m +- se" with a precision that suits the value, e.g. "12.3 ± 0.4".
 std::string format_mean_se(const SampleStats& s, double scale = 1.0);
+/// A number for people at the report's precision: one decimal from 100, two from 1, more below
+/// ("127.5", "27.54", "0.0125"; "n/a" for NaN).
+std::string format_number(double v);
 /// A p-value for people: "< 0.001", "0.023", "n/a".
 std::string format_p(double p);
 
