@@ -150,6 +150,23 @@ if [ "$action" = collect ]; then
   exit $status
 fi
 
+# True when every trial of a milestone (results folder, arms, trials) has its compact result in
+# the repository.
+all_committed() {
+  local arm_list
+  IFS=, read -r -a arm_list <<<"$2"
+  [ "$(find "$paper/$1" -maxdepth 1 -name '*.results.json' 2>/dev/null | wc -l)" -ge $((${#arm_list[@]} * $3)) ]
+}
+
+# True when the programs of the version recorded in $paper/$1 are built here (or --bin).
+version_built() {
+  [ -z "$fixed_bin" ] || return 0
+  [ -f "$paper/$1" ] || return 1
+  local commit
+  commit=$(git rev-parse -q --verify "$(head -n 1 "$paper/$1")^{commit}") || return 1
+  [ -x "$dir/src-${commit:0:12}/build/bin/robozoo-experiment" ] && [ -x "$dir/src-${commit:0:12}/build/bin/robozoo-evolve" ]
+}
+
 # Sets bin to the programs of the version recorded in $paper/$1 (writing it first: this
 # checkout's commit), cloned and built once in DIR/src-<commit>; with --bin, that folder.
 use_version() {
@@ -201,10 +218,7 @@ if [ "$action" = save ]; then
   for m in "${milestones[@]}"; do
     read -r name version runs arms gens ntrials folder sets _ <<<"$m"
     [ -e "$dir/$name.done" ] && continue
-    IFS=, read -r -a arm_list <<<"$arms"
-    if [ "$(find "$paper/$folder" -maxdepth 1 -name '*.results.json' 2>/dev/null | wc -l)" -ge $((${#arm_list[@]} * ntrials)) ]; then
-      continue
-    fi
+    all_committed "$folder" "$arms" "$ntrials" && continue
     use_version "$version"
     experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
     echo "paper_experiment.sh: $name: portable checkpoints of its trials in progress -> $(checkpoints_folder "$folder")"
@@ -217,9 +231,18 @@ fi
 if [ "$action" = status ]; then
   for m in "${milestones[@]}"; do
     read -r name version runs arms gens ntrials folder sets _ <<<"$m"
+    if all_committed "$folder" "$arms" "$ntrials"; then
+      echo "paper_experiment.sh: $name: every trial's compact result is in $paper/$folder"
+      continue
+    fi
     done_note=""
     [ -e "$dir/$name.done" ] && done_note=" (finished on this machine)"
     echo "paper_experiment.sh: $name: $arms to generation $gens, $ntrials trials each$done_note"
+    # A question builds nothing: a milestone whose version is not built here has not started here.
+    if ! version_built "$version"; then
+      echo "  not started on this machine (its version, $paper/$version, is not built in $dir)"
+      continue
+    fi
     use_version "$version"
     experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
     "${cmd[@]}" --status
@@ -251,9 +274,7 @@ milestone() {  # name, version file, runs folder, arms, generations, trials, res
   for f in "$paper/$folder"/*.results.json; do
     [ -e "$f" ] && [ ! -e "$dir/$folder/$(basename "$f")" ] && cp "$f" "$dir/$folder/"
   done
-  local arm_list
-  IFS=, read -r -a arm_list <<<"$arms"
-  if [ "$(find "$paper/$folder" -maxdepth 1 -name '*.results.json' 2>/dev/null | wc -l)" -ge $((${#arm_list[@]} * ntrials)) ]; then
+  if all_committed "$folder" "$arms" "$ntrials"; then
     echo "paper_experiment.sh: $name: every trial's compact result is in $paper/$folder; nothing to run"
     return 0
   fi

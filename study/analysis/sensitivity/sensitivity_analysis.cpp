@@ -32,8 +32,8 @@ const GenerationRecord& record_at(const RunSummary& r, int32_t generation, const
                                 " generations, fewer than the " + std::to_string(generation) + " compared");
   const GenerationRecord& g = r.generations[i];
   if (g.generation != generation - 1)
-    throw std::invalid_argument(where + " run " + run_name(r) + ": its record " + std::to_string(i) + " is generation " +
-                                std::to_string(g.generation));
+    throw std::invalid_argument(where + " run " + run_name(r) + ": its record " + std::to_string(i) +
+                                " is generation " + std::to_string(g.generation));
   return g;
 }
 
@@ -67,7 +67,8 @@ std::string reading_of(const FactorResult& f, const SensitivityParams& p) {
   if (!std::isfinite(f.gap.low)) return "no test (an arm has fewer than two runs, or no spread)";
   std::string ref;
   if (std::isfinite(f.reference_gap.gap))
-    ref = f.gap.covers(f.reference_gap.gap) ? "its interval holds the reference's gap" : "its interval excludes the reference's gap";
+    ref = f.gap.covers(f.reference_gap.gap) ? "its interval holds the reference's gap"
+                                            : "its interval excludes the reference's gap";
   if (f.significant) {
     const std::string fitter = f.gap.gap > 0 ? p.control_arm : p.experimental_arm;
     return fitter + " fitter, significant after Holm" + (ref.empty() ? "" : "; " + ref);
@@ -80,7 +81,8 @@ std::string reading_of(const FactorResult& f, const SensitivityParams& p) {
 }  // namespace
 
 SensitivityAnalysis analyze_sensitivity(const std::vector<RunSummary>& reference,
-                                        const std::vector<SensitivityFactor>& factors, const SensitivityParams& params) {
+                                        const std::vector<SensitivityFactor>& factors,
+                                        const SensitivityParams& params) {
   if (params.generation < 1) throw std::invalid_argument("the sensitivity study compares a generation >= 1");
   if (params.control_arm == params.experimental_arm)
     throw std::invalid_argument("the sensitivity study compares two different arms");
@@ -110,8 +112,8 @@ SensitivityAnalysis analyze_sensitivity(const std::vector<RunSummary>& reference
       if (run->software_version != r.software_version)
         throw std::invalid_argument(where + " run " + run_name(*run) + " ran robozoo " + run->software_version +
                                     ", the reference's run of its seed " + r.software_version);
-      const auto changes = config_difference(r.config_json, run->config_json, {"generations"},
-                                             where + " run " + run_name(*run));
+      const auto changes =
+          config_difference(r.config_json, run->config_json, {"generations"}, where + " run " + run_name(*run));
       if (changes.empty())
         throw std::invalid_argument(where + " run " + run_name(*run) +
                                     " has the reference's configuration: nothing was changed");

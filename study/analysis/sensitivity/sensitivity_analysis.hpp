@@ -39,37 +39,37 @@ struct SensitivityParams {
 };
 
 struct SensitivityFactor {
-  std::string name;            ///< e.g. "bias-1.0" (its folder)
+  std::string name;              ///< e.g. "bias-1.0" (its folder)
   std::vector<RunSummary> runs;  ///< both arms, any order
 };
 
 /// One arm's evaluations in one generation by outcome (counts pooled over runs), in the
 /// order of GenerationRecord::outcomes.
 struct ArmOutcomes {
-  size_t runs = 0;                    ///< runs pooled (count)
-  std::array<int64_t, 6> counts{};    ///< evaluations per outcome (count)
-  int64_t total() const;              ///< evaluations (count)
-  int64_t simulated() const;          ///< completed or stopped early (count)
+  size_t runs = 0;                  ///< runs pooled (count)
+  std::array<int64_t, 6> counts{};  ///< evaluations per outcome (count)
+  int64_t total() const;            ///< evaluations (count)
+  int64_t simulated() const;        ///< completed or stopped early (count)
 };
 
 struct FactorResult {
   std::string name;
-  std::vector<ConfigChange> changes;     ///< the factor's configuration against the reference's
-  std::vector<int64_t> control_seeds;    ///< sorted
+  std::vector<ConfigChange> changes;   ///< the factor's configuration against the reference's
+  std::vector<int64_t> control_seeds;  ///< sorted
   std::vector<int64_t> experimental_seeds;
   MeanGap gap;            ///< control - experimental, best-so-far fitness at the generation
   MeanGap reference_gap;  ///< the same of the reference on these seeds
   MeanGap difference;     ///< gap - reference_gap
   double holm_p = std::numeric_limits<double>::quiet_NaN();  ///< Holm-adjusted p of gap = 0
-  bool significant = false;  ///< holm_p < alpha
-  std::string reading;       ///< the verdict in words
+  bool significant = false;                                  ///< holm_p < alpha
+  std::string reading;                                       ///< the verdict in words
   ArmOutcomes control_outcomes, experimental_outcomes;
   ArmOutcomes reference_control_outcomes, reference_experimental_outcomes;
 };
 
 struct SensitivityAnalysis {
   SensitivityParams params;
-  std::string software_version;  ///< the reference's (every run's)
+  std::string software_version;       ///< the reference's (every run's)
   std::vector<FactorResult> factors;  ///< in the order given
 };
 

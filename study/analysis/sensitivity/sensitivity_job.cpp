@@ -94,9 +94,10 @@ SensitivityOutcome run_sensitivity(const SensitivityOptions& o, std::ostream& pr
   in.notes = o.notes;
   in.command = command_of(o, params.generation);
   fs::create_directories(out.out_dir);
-  const std::pair<const char*, std::string> files[] = {{"sensitivity.csv", sensitivity_csv(in.analysis)},
-                                                       {"sensitivity_outcomes.csv", sensitivity_outcomes_csv(in.analysis)},
-                                                       {"report.md", sensitivity_markdown(in)}};
+  const std::pair<const char*, std::string> files[] = {
+      {"sensitivity.csv", sensitivity_csv(in.analysis)},
+      {"sensitivity_outcomes.csv", sensitivity_outcomes_csv(in.analysis)},
+      {"report.md", sensitivity_markdown(in)}};
   for (const auto& [name, text] : files) {
     write_file_atomic((fs::path(out.out_dir) / name).string(), text);
     out.files.push_back(name);

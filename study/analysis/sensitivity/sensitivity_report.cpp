@@ -39,7 +39,9 @@ std::string interval(const MeanGap& g) {
   return s;
 }
 
-std::string mean_cell(double mean, size_t n) { return n == 0 ? "n/a" : format_number(mean) + " (" + std::to_string(n) + ")"; }
+std::string mean_cell(double mean, size_t n) {
+  return n == 0 ? "n/a" : format_number(mean) + " (" + std::to_string(n) + ")";
+}
 
 std::string share(int64_t count, int64_t total) {
   if (total <= 0) return "n/a";
@@ -73,33 +75,80 @@ std::vector<OutcomeRow> outcome_rows(const SensitivityAnalysis& a) {
 }  // namespace
 
 std::string sensitivity_csv(const SensitivityAnalysis& a) {
-  CsvWriter w({"factor", "changes", "generation", "control_arm", "experimental_arm", "control_seeds",
-               "experimental_seeds", "control_mean", "experimental_mean", "gap", "gap_low", "gap_high", "gap_df",
-               "student_p", "holm_p", "significant", "reference_control_mean", "reference_experimental_mean",
-               "reference_gap", "reference_gap_low", "reference_gap_high", "reference_p", "difference",
-               "difference_low", "difference_high", "difference_df", "level", "reading"});
+  CsvWriter w({"factor",
+               "changes",
+               "generation",
+               "control_arm",
+               "experimental_arm",
+               "control_seeds",
+               "experimental_seeds",
+               "control_mean",
+               "experimental_mean",
+               "gap",
+               "gap_low",
+               "gap_high",
+               "gap_df",
+               "student_p",
+               "holm_p",
+               "significant",
+               "reference_control_mean",
+               "reference_experimental_mean",
+               "reference_gap",
+               "reference_gap_low",
+               "reference_gap_high",
+               "reference_p",
+               "difference",
+               "difference_low",
+               "difference_high",
+               "difference_df",
+               "level",
+               "reading"});
   for (const FactorResult& f : a.factors) {
-    w.add_row({f.name, describe_changes(f.changes), std::to_string(a.params.generation), a.params.control_arm,
-               a.params.experimental_arm, seeds_text(f.control_seeds), seeds_text(f.experimental_seeds),
-               csv_number(f.gap.mean_a), csv_number(f.gap.mean_b), csv_number(f.gap.gap), csv_number(f.gap.low),
-               csv_number(f.gap.high), csv_number(f.gap.df), csv_number(f.gap.p), csv_number(f.holm_p),
-               f.significant ? "1" : "0", csv_number(f.reference_gap.mean_a), csv_number(f.reference_gap.mean_b),
-               csv_number(f.reference_gap.gap), csv_number(f.reference_gap.low), csv_number(f.reference_gap.high),
-               csv_number(f.reference_gap.p), csv_number(f.difference.gap), csv_number(f.difference.low),
-               csv_number(f.difference.high), csv_number(f.difference.df), csv_number(a.params.level), f.reading});
+    w.add_row({f.name,
+               describe_changes(f.changes),
+               std::to_string(a.params.generation),
+               a.params.control_arm,
+               a.params.experimental_arm,
+               seeds_text(f.control_seeds),
+               seeds_text(f.experimental_seeds),
+               csv_number(f.gap.mean_a),
+               csv_number(f.gap.mean_b),
+               csv_number(f.gap.gap),
+               csv_number(f.gap.low),
+               csv_number(f.gap.high),
+               csv_number(f.gap.df),
+               csv_number(f.gap.p),
+               csv_number(f.holm_p),
+               f.significant ? "1" : "0",
+               csv_number(f.reference_gap.mean_a),
+               csv_number(f.reference_gap.mean_b),
+               csv_number(f.reference_gap.gap),
+               csv_number(f.reference_gap.low),
+               csv_number(f.reference_gap.high),
+               csv_number(f.reference_gap.p),
+               csv_number(f.difference.gap),
+               csv_number(f.difference.low),
+               csv_number(f.difference.high),
+               csv_number(f.difference.df),
+               csv_number(a.params.level),
+               f.reading});
   }
   return w.str();
 }
 
 std::string sensitivity_outcomes_csv(const SensitivityAnalysis& a) {
   std::vector<std::string> header = {"factor", "source", "arm", "generation", "runs", "evaluations"};
-  const char* names[] = {"not_simulated", "completed", "stopped_early", "acceleration_fault", "rolling_contact",
-                         "rolling_spin"};
+  const char* names[] = {"not_simulated",      "completed",       "stopped_early",
+                         "acceleration_fault", "rolling_contact", "rolling_spin"};
   for (const char* n : names) header.push_back(n);
   CsvWriter w(header);
   for (const OutcomeRow& r : outcome_rows(a)) {
-    std::vector<std::string> row = {r.factor, r.source, r.arm, std::to_string(a.params.generation),
-                                    std::to_string(r.o->runs), std::to_string(r.o->total())};
+    std::vector<std::string> row = {r.factor,
+                                    r.source,
+                                    r.arm,
+                                    std::to_string(a.params.generation),
+                                    std::to_string(r.o->runs),
+                                    std::to_string(r.o->total())};
     for (int64_t c : r.o->counts) row.push_back(std::to_string(c));
     w.add_row(row);
   }
@@ -114,11 +163,12 @@ std::string sensitivity_markdown(const SensitivityReportInputs& in) {
   md << "# " << in.title << "\n\n";
   for (const auto& note : in.notes) md << note << "\n\n";
   md << "Each factor's runs (`" << in.factors_dir << "/<factor>/results`) changed one thing from the reference's "
-     << "configuration (`" << in.reference_dir << "`, robozoo " << (a.software_version.empty() ? "?" : a.software_version)
+     << "configuration (`" << in.reference_dir << "`, robozoo "
+     << (a.software_version.empty() ? "?" : a.software_version)
      << ") and ran the reference's seeds again. Compared: best-so-far fitness after " << p.generation
-     << " generations (generation record " << p.generation - 1 << ", counted from 0), the **gap** "
-     << p.control_arm << " mean minus " << p.experimental_arm << " mean (positive: " << p.control_arm
-     << " fitter), with its " << level << " % interval from Student's pooled-variance t; beside it the reference's "
+     << " generations (generation record " << p.generation - 1 << ", counted from 0), the **gap** " << p.control_arm
+     << " mean minus " << p.experimental_arm << " mean (positive: " << p.control_arm << " fitter), with its " << level
+     << " % interval from Student's pooled-variance t; beside it the reference's "
      << "own gap on the same seeds at the same generation. The factors' tests (gap = 0) are one family under Holm's "
      << "correction at α = " << csv_number(p.alpha) << "; the reference is not a member. The difference of the "
      << "two gaps has a Welch-Satterthwaite interval that treats them as independent samples: descriptive, not a "

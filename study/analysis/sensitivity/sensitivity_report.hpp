@@ -17,12 +17,12 @@
 namespace robozoo {
 
 struct SensitivityReportInputs {
-  std::string title;                  ///< the report's heading
-  std::string factors_dir;            ///< the folder of factors read (as given)
-  std::string reference_dir;          ///< the reference's compact results (as given)
-  std::vector<std::string> waiting;   ///< factors in factors_dir without results yet
-  std::vector<std::string> notes;     ///< paragraphs for the top of the report
-  std::string command;                ///< the command that makes the files again
+  std::string title;                 ///< the report's heading
+  std::string factors_dir;           ///< the folder of factors read (as given)
+  std::string reference_dir;         ///< the reference's compact results (as given)
+  std::vector<std::string> waiting;  ///< factors in factors_dir without results yet
+  std::vector<std::string> notes;    ///< paragraphs for the top of the report
+  std::string command;               ///< the command that makes the files again
   SensitivityAnalysis analysis;
 };
 

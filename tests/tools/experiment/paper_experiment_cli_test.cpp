@@ -138,6 +138,13 @@ TEST(PaperExperimentCli, ANewMachineCountsCommittedResultsAndRepeatsTheRest) {
   fs::remove_all(t / "paper/m3/g500");
   fs::remove_all(t / "paper/sensitivity");
   const std::string other = t / "other";
+  // --status asks and runs nothing: the committed milestones are named as such.
+  const Outcome status = run_shell(script(t, other, "--status"));
+  ASSERT_EQ(status.status, 0) << status.output;
+  EXPECT_NE(status.output.find("M1: every trial's compact result is in"), std::string::npos) << status.output;
+  EXPECT_NE(status.output.find("M2: feedforward,recurrent to generation 3, 1 trials each"), std::string::npos)
+      << status.output;
+  EXPECT_FALSE(fs::exists(other + "/runs"));
   const Outcome o = run_shell(script(t, other));
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_NE(o.output.find("M1: every trial's compact result is in"), std::string::npos) << o.output;

@@ -18,9 +18,23 @@ namespace fs = std::filesystem;
 // A small experiment in `out`: two trials per arm (seeds 1, 5 and 2, 6), with unit bias so
 // that feed-forward robots reach the simulator, plus `extra`.
 void small_experiment(const std::string& out, const std::string& generations, const std::vector<std::string>& extra) {
-  std::vector<std::string> args = {bin("robozoo-experiment"), "--out", out, "--trials", "2", "--population", "12",
-                                   "--generations", generations, "--steps", "300", "--workers", "1",
-                                   "--progress-interval", "0", "--set", "growth.bias_input=1.0"};
+  std::vector<std::string> args = {bin("robozoo-experiment"),
+                                   "--out",
+                                   out,
+                                   "--trials",
+                                   "2",
+                                   "--population",
+                                   "12",
+                                   "--generations",
+                                   generations,
+                                   "--steps",
+                                   "300",
+                                   "--workers",
+                                   "1",
+                                   "--progress-interval",
+                                   "0",
+                                   "--set",
+                                   "growth.bias_input=1.0"};
   args.insert(args.end(), extra.begin(), extra.end());
   const auto r = run_shell(join(args));
   ASSERT_EQ(r.status, 0) << r.output;
@@ -40,7 +54,8 @@ TEST(StatsSensitivityCli, ComparesAFactorWithTheReferenceAndMakesItsReportAgain)
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("1 factors compared at generation 3, 1 without results yet"), std::string::npos) << r.output;
   const std::string report = read_file(t / "study/report.md");
-  EXPECT_NE(report.find("| proportional | `growth.weight_mapping` \"rescaled\" → \"proportional\" |"), std::string::npos)
+  EXPECT_NE(report.find("| proportional | `growth.weight_mapping` \"rescaled\" → \"proportional\" |"),
+            std::string::npos)
       << report;
   EXPECT_NE(report.find("after 3 generations (generation record 2, counted from 0)"), std::string::npos);
   EXPECT_NE(report.find("- proportional: seeds feedforward 1 5; recurrent 2 6."), std::string::npos) << report;
@@ -53,8 +68,8 @@ TEST(StatsSensitivityCli, ComparesAFactorWithTheReferenceAndMakesItsReportAgain)
       << csv;
 
   // The report's command, run again into another folder, writes the same files.
-  const auto again = run_shell(cd + bin("robozoo-stats") + command.substr(std::string("build/bin/robozoo-stats").size()) +
-                               " --out again");
+  const auto again = run_shell(cd + bin("robozoo-stats") +
+                               command.substr(std::string("build/bin/robozoo-stats").size()) + " --out again");
   ASSERT_EQ(again.status, 0) << again.output;
   for (const std::string f : {"sensitivity.csv", "sensitivity_outcomes.csv"})
     EXPECT_EQ(read_file(t / ("again/" + f)), read_file(t / ("study/" + f))) << f;

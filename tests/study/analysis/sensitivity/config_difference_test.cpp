@@ -40,10 +40,9 @@ TEST(ConfigDifference, NamesEachChangedKeyWithBothValues) {
 }
 
 TEST(ConfigDifference, AnArrayIsOneValue) {
-  const auto d = config_difference(config_text(), config_text([](nlohmann::json& j) {
-                                     j["neat"]["hidden_activations"] = {"signed_sigmoid"};
-                                   }),
-                                   {}, "test");
+  const auto d = config_difference(
+      config_text(), config_text([](nlohmann::json& j) { j["neat"]["hidden_activations"] = {"signed_sigmoid"}; }), {},
+      "test");
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].key, "neat.hidden_activations");
   EXPECT_EQ(d[0].to, "[\"signed_sigmoid\"]");

@@ -44,9 +44,9 @@ RunSummary run(const std::string& arm, int64_t seed, double fitness, const std::
 
 // The reference: feed-forward seeds 1, 5, 9 and recurrent 2, 6, 10, run to 5 generations.
 std::vector<RunSummary> reference() {
-  return {run("feedforward", 1, 10, config(0.3, 5), 5),  run("feedforward", 5, 12, config(0.3, 5), 5),
-          run("feedforward", 9, 50, config(0.3, 5), 5),  run("recurrent", 2, 9, config(0.3, 5), 5),
-          run("recurrent", 6, 10, config(0.3, 5), 5),    run("recurrent", 10, -40, config(0.3, 5), 5)};
+  return {run("feedforward", 1, 10, config(0.3, 5), 5), run("feedforward", 5, 12, config(0.3, 5), 5),
+          run("feedforward", 9, 50, config(0.3, 5), 5), run("recurrent", 2, 9, config(0.3, 5), 5),
+          run("recurrent", 6, 10, config(0.3, 5), 5),   run("recurrent", 10, -40, config(0.3, 5), 5)};
 }
 
 SensitivityParams at(int generation) {
@@ -101,10 +101,11 @@ TEST(SensitivityAnalysis, HolmAcrossTheFactorsAndTheReadings) {
                           {run("feedforward", 1, 100, config(1.0)), run("feedforward", 5, 101, config(1.0)),
                            run("feedforward", 9, 100.5, config(1.0)), run("recurrent", 2, 10, config(1.0)),
                            run("recurrent", 6, 11, config(1.0)), run("recurrent", 10, 10.5, config(1.0))}};
-  SensitivityFactor unclear{"unclear",
-                            {run("feedforward", 1, 10, config(0.3, 3, false)), run("feedforward", 5, 50, config(0.3, 3, false)),
-                             run("feedforward", 9, 30, config(0.3, 3, false)), run("recurrent", 2, 25, config(0.3, 3, false)),
-                             run("recurrent", 6, -15, config(0.3, 3, false)), run("recurrent", 10, 5, config(0.3, 3, false))}};
+  SensitivityFactor unclear{
+      "unclear",
+      {run("feedforward", 1, 10, config(0.3, 3, false)), run("feedforward", 5, 50, config(0.3, 3, false)),
+       run("feedforward", 9, 30, config(0.3, 3, false)), run("recurrent", 2, 25, config(0.3, 3, false)),
+       run("recurrent", 6, -15, config(0.3, 3, false)), run("recurrent", 10, 5, config(0.3, 3, false))}};
   const SensitivityAnalysis a = analyze_sensitivity(reference(), {clear, unclear}, at(3));
   ASSERT_EQ(a.factors.size(), 2u);
   const auto holm = holm_adjust({a.factors[0].gap.p, a.factors[1].gap.p});
