@@ -19,12 +19,13 @@
 
 #include <toml++/toml.h>
 
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/neat/population_json.hpp"
 #include "robozoo/eval_result_t.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 
 namespace fs = std::filesystem;

@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "study/analysis/read/champion_log.hpp"
+#include "evolve/run/champion_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "util/exit_status.hpp"
 

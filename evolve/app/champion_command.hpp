@@ -1,6 +1,6 @@
 #pragma once
 // robozoo-evolve champion RESULT --log OUT: a compact result's best-of-run
-// champion as a one-generation log (study/analysis/read/champion_log.hpp) that
+// champion as a one-generation log (evolve/run/champion_log.hpp) that
 // robozoo-render video, robozoo-replay check and robozoo-view read.
 #include <CLI/CLI.hpp>
 

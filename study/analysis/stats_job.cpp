@@ -14,6 +14,7 @@
 #include "study/analysis/figures/experiment_tables.hpp"
 #include "study/analysis/figures/gnuplot_runner.hpp"
 #include "study/analysis/figures/plot_scripts.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "study/analysis/report/report.hpp"
 #include "study/analysis/report/reproduce_commands.hpp"
 #include "util/run_program.hpp"

@@ -3,7 +3,7 @@
 // another machine continues it without its log (20-40 MB a trial, which barely
 // compresses). It holds robozoo-evolve's checkpoint of the trial after
 // generation k - 1 (evolve/run/checkpoint.hpp) and the trial's compact result
-// of generations 0..k-1 (study/analysis/read/run_results.hpp), both
+// of generations 0..k-1 (evolve/run/run_results.hpp), both
 // compressed (zstd), in one file, <trial>.portable-checkpoint.
 //
 // Format (version 1), integers little-endian, a 60-byte header then the payload:
@@ -37,7 +37,7 @@
 #include <vector>
 
 #include "evolve/run/checkpoint.hpp"
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 #include "study/experiment/trial_plan.hpp"
 
 namespace robozoo {

@@ -16,31 +16,16 @@
 // whichever arms run) uses seed 4 (k - 1) + a + 1: trial 1 seeds 1, 2, 3, 4;
 // trial 2 seeds 5, 6, 7, 8; ... so a trial's seed does not depend on which arms
 // run, and the samples of the arms are independent, as Student's unpaired
-// t-test assumes.
+// t-test assumes. (Arm, its names and arm_of: evolve/neat/arm.hpp.)
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "evolve/neat/arm.hpp"
 #include "evolve/neat/params.hpp"
 
 namespace robozoo {
 
-/// One arm of an experiment: a regime and its generation-0 topology.
-enum class Arm : int8_t { FeedForward = 0, Recurrent = 1, RecurrentSparse = 2, RecurrentZero = 3 };
-constexpr int kNumArms = 4;
-/// "feedforward", "recurrent", "recurrent-sparse", "recurrent-zero"
-std::string arm_name(Arm a);
-Arm arm_from_name(const std::string& name);  ///< throws std::invalid_argument listing the names
-Regime arm_regime(Arm a);                    ///< the regime the arm evolves in
-/// The generation-0 topology of the arm's runs: inputs_to_outputs for
-/// recurrent-sparse, all_allowed_recurrent_zero for recurrent-zero, the default
-/// (all_allowed) otherwise.
-InitialLinks arm_initial_links(Arm a);
-/// The arm a run's configuration belongs to: feedforward for the feed-forward
-/// regime; in the recurrent regime recurrent-sparse for the inputs-to-outputs
-/// start, recurrent-zero for the all_allowed_recurrent_zero start, recurrent
-/// for all_allowed.
-Arm arm_of(Regime regime, InitialLinks initial_links);
 /// Seed of trial k (1-based) of arm a: kNumArms (k - 1) + a + 1 = 4 (k - 1) + a + 1.
 int64_t trial_seed(Arm a, int trial);
 

@@ -16,7 +16,7 @@
 #include "robozoo/generation_t.hpp"
 #include "robozoo/run_t.hpp"
 #include "runlog/read/log_reader.hpp"
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 
 namespace robozoo::view {
 

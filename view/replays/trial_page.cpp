@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "study/analysis/read/champion_log.hpp"
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/champion_log.hpp"
+#include "evolve/run/run_results.hpp"
 #include "view/replays/export.hpp"
 
 namespace robozoo::view {

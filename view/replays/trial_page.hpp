@@ -3,7 +3,7 @@
 // self-contained replay: the trial's newest champion from its log (a growing
 // log's complete events), or, for a trial known only from its compact result
 // (finished on another machine), its best-of-run robot grown, evaluated and
-// simulated again by this build (study's write_champion_log, through a
+// simulated again by this build (evolve/run/champion_log's write_champion_log, through a
 // temporary log that is removed afterwards). When this build does not give the
 // committed fitness, r, d or outcome, the answer says so and shows nothing.
 #include <string>

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "study/analysis/read/run_summary.hpp"
+#include "evolve/run/run_summary.hpp"
 #include "study/analysis/measure/topology.hpp"
 
 namespace robozoo {

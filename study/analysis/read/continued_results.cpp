@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "runlog/read/log_reader.hpp"
+#include "study/analysis/read/log_results.hpp"
 
 namespace robozoo {
 

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "evolve/run/checkpoint.hpp"
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 
 namespace robozoo {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 
 namespace robozoo {
 

@@ -7,10 +7,11 @@
 
 #include <fstream>
 
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
 

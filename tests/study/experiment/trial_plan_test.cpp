@@ -70,20 +70,6 @@ TEST(TrialPlan, FourArmsRunTrialByTrialWithSeedsFixedPerArm) {
   EXPECT_EQ(u[1].name(), "feedforward-s1");
   EXPECT_EQ(u[2].name(), "recurrent-zero-s8");
   for (const auto& x : u) EXPECT_EQ(x.seed, trial_seed(x.arm, x.number));
-  // Names, regimes, starts and the arm of a run's configuration, for every arm.
-  for (int i = 0; i < kNumArms; ++i) {
-    const Arm arm = static_cast<Arm>(i);
-    EXPECT_EQ(arm_from_name(arm_name(arm)), arm);
-    EXPECT_EQ(arm_of(arm_regime(arm), arm_initial_links(arm)), arm) << arm_name(arm);
-  }
-  EXPECT_EQ(arm_name(Arm::RecurrentZero), "recurrent-zero");
-  EXPECT_EQ(arm_regime(Arm::RecurrentZero), Regime::Recurrent);
-  EXPECT_EQ(arm_initial_links(Arm::RecurrentZero), InitialLinks::AllAllowedRecurrentZero);
-  EXPECT_EQ(arm_initial_links(Arm::RecurrentSparse), InitialLinks::InputsToOutputs);
-  EXPECT_EQ(arm_initial_links(Arm::Recurrent), InitialLinks::AllAllowed);
-  EXPECT_EQ(arm_initial_links(Arm::FeedForward), InitialLinks::AllAllowed);
-  EXPECT_EQ(arm_of(Regime::Recurrent, InitialLinks::AllAllowedRecurrentZero), Arm::RecurrentZero);
-  EXPECT_EQ(arm_of(Regime::FeedForward, InitialLinks::AllAllowedRecurrentZero), Arm::FeedForward);
 }
 
 TEST(TrialPlan, ThirdArmHasItsOwnSeedsAndTheControlsStart) {
@@ -112,10 +98,6 @@ TEST(TrialPlan, ThirdArmHasItsOwnSeedsAndTheControlsStart) {
   two.trials = 30;
   const auto u = plan_trials(two);
   for (size_t i = 0; i < u.size(); ++i) EXPECT_EQ(u[i].seed, t[i / 2 * 3 + i % 2].seed);
-  EXPECT_EQ(arm_of(Regime::Recurrent, InitialLinks::InputsToOutputs), Arm::RecurrentSparse);
-  EXPECT_EQ(arm_of(Regime::Recurrent, InitialLinks::AllAllowed), Arm::Recurrent);
-  EXPECT_EQ(arm_of(Regime::FeedForward, InitialLinks::InputsToOutputs), Arm::FeedForward);
-  EXPECT_THROW(arm_from_name("sparse"), std::invalid_argument);
   p.arms = {Arm::Recurrent, Arm::Recurrent};
   EXPECT_THROW(plan_trials(p), std::invalid_argument);
 }

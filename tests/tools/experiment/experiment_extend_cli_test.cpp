@@ -10,7 +10,7 @@
 
 #include <filesystem>
 
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
 #include "evolve/run/checkpoint.hpp"

@@ -9,7 +9,8 @@
 
 #include <filesystem>
 
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "study/analysis/read/log_results.hpp"
 #include "tests/study/analysis/hand_made_experiment.hpp"
 #include "tests/support/subprocess.hpp"
 

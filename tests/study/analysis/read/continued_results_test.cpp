@@ -7,6 +7,7 @@
 
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "study/analysis/read/log_results.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 

@@ -1,7 +1,7 @@
 // Compact results: a real run's log, reduced and written, reads back to the
 // same analysis for every analysis option; bad files are refused naming the
 // file and the field.
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>
@@ -15,6 +15,7 @@
 #include "evolve/neat/population_json.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 

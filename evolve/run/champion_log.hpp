@@ -9,7 +9,7 @@
 // are the result's.
 #include <string>
 
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 
 namespace robozoo {
 

@@ -3,8 +3,10 @@
 // identity, every generation's fitness summary, every generation's champion
 // (genome and morphology) and the lowest height each sphere reached in each
 // logged pose stream. Read with safe_decode: a log is never trusted; a message
-// that does not decode is counted and skipped. The file is read with runlog/,
-// the one reader of logs.
+// that does not decode is counted and skipped. A log file is read with
+// runlog/, the one reader of logs (summarize_run_file in
+// study/analysis/read/log_results.hpp); a compact result (run_results.hpp)
+// holds the same summary, reduced.
 #include <array>
 #include <cstdint>
 #include <map>
@@ -80,10 +82,6 @@ void apply_run_configuration(RunSummary& s);
 /// Summarises a log already read. Throws std::invalid_argument naming `path`
 /// when it holds no decodable ROBOZOO_RUN, or runs with different ids.
 RunSummary summarize_run(const LogContents& log, const std::string& path);
-/// Reads the log at `path` with runlog's reader (past damage: the events after
-/// garbage are read too) and summarises it (std::runtime_error when unreadable).
-RunSummary summarize_run_file(const std::string& path);
-
 /// The best-of-run champion: the highest fitness, and among equals the earliest
 /// generation (the one whose pose stream was logged when it became champion).
 /// nullptr when no champion was logged.

@@ -1,14 +1,14 @@
-#include "study/analysis/read/champion_log.hpp"
+#include "evolve/run/champion_log.hpp"
 
 #include <cstdio>
 #include <stdexcept>
 
 #include "evolve/config/run_config.hpp"
+#include "evolve/cppn/genome.hpp"
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/run/trajectory.hpp"
-#include "runlog/robots/regrow.hpp"
 
 namespace robozoo {
 
@@ -38,7 +38,8 @@ ChampionLogInfo write_champion_log(const RunResults& results, const std::string&
     throw std::invalid_argument(s.path + ": its configuration cannot be read by this robozoo: " + e.what());
   }
   config.generations = 1;
-  const Genome genome = logged_genes(best->genome);
+  // Its genes as every program reads a logged genome (runlog/robots/regrow.hpp's logged_genes).
+  const Genome genome = genome_from_message(best->genome, robot_layout());
   const cppn_genome_t& logged = best->genome;
 
   // This build must give the committed evaluation, or the log would show another robot.

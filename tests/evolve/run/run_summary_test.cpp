@@ -1,4 +1,4 @@
-#include "study/analysis/read/run_summary.hpp"
+#include "evolve/run/run_summary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "runlog/read/log_reader.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "tests/study/analysis/hand_made_log.hpp"
 #include "tests/support/subprocess.hpp"
 

@@ -1,4 +1,4 @@
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -169,21 +169,6 @@ RunSummary compact_summary(const RunSummary& full) {
     if (z != full.min_center_z.end()) s.min_center_z.insert(*z);
   }
   return s;
-}
-
-RunResults results_from_log(const std::string& log_path) {
-  RunResults r;
-  r.run = compact_summary(summarize_run_file(log_path));
-  const std::string cp = checkpoint_path_for(log_path);
-  try {
-    if (std::filesystem::exists(cp)) {
-      r.evolve_seconds = read_checkpoint(cp).elapsed_seconds;
-      r.has_evolve_seconds = true;
-    }
-  } catch (const std::exception&) {
-    // The time is informative only: an unreadable checkpoint leaves it out.
-  }
-  return r;
 }
 
 json run_results_to_json(const RunResults& res) {

@@ -1,4 +1,4 @@
-#include "study/analysis/read/run_summary.hpp"
+#include "evolve/run/run_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,10 @@
 #include <stdexcept>
 
 #include "evolve/config/run_config.hpp"
-#include "study/experiment/trial_plan.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/log_continuation.hpp"
 #include "evolve/messages/safe_decode.hpp"
-#include "runlog/read/log_reader.hpp"
+#include "evolve/neat/arm.hpp"
 
 namespace robozoo {
 
@@ -148,8 +147,6 @@ RunSummary summarize_run(const LogContents& log, const std::string& path) {
   }
   return s;
 }
-
-RunSummary summarize_run_file(const std::string& path) { return summarize_run(scan_event_log(path).contents, path); }
 
 const ChampionRecord* best_of_run(const RunSummary& run) {
   const ChampionRecord* best = nullptr;

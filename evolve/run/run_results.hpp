@@ -32,7 +32,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/analysis/read/run_summary.hpp"
+#include "evolve/run/run_summary.hpp"
 
 namespace robozoo {
 
@@ -49,10 +49,6 @@ inline constexpr const char* kRunResultsExtension = ".results.json";
 /// `full` reduced to what analyze_run() reads: analyze_run gives the same
 /// result on both, for any AnalysisParams.
 RunSummary compact_summary(const RunSummary& full);
-
-/// The compact results of the log at `log_path`: its summary, reduced, and the
-/// wall time of `<log_path>.checkpoint` when there is one.
-RunResults results_from_log(const std::string& log_path);
 
 nlohmann::json run_results_to_json(const RunResults& r);
 /// Checks every key, type, count and cross-reference; throws
