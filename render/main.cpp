@@ -356,6 +356,10 @@ int main(int argc, char** argv) {
   zc->add_option("--columns", zoo.sheet.columns, "robots per row (0: automatic)")->capture_default_str();
   zc->add_option("--title", zoo.sheet.title, "a title above the grid");
   zc->add_flag("--same-scale", zoo.sheet.same_scale, "one camera distance for all robots (sizes comparable)");
+  zc->add_option("--inset-below", zoo.sheet.inset_below,
+                 "--same-scale: a robot drawn at less than this fraction of the size that fills its cell also gets an "
+                 "inset that it fills, marked with its magnification (0: none)")
+      ->capture_default_str();
   zc->add_flag_callback(
       "--no-grid", [&zoo] { zoo.sheet.grid = false; }, "no grid on the ground");
   zc->add_option("--samples", zoo.sheet.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();

@@ -39,7 +39,8 @@ std::vector<std::string> results_files(const std::vector<std::string>& paths) {
     } else if (ends_with(p, kRunResultsExtension)) {
       out.push_back(p);
     } else {
-      throw std::invalid_argument(p + ": neither a compact result (*" + kRunResultsExtension + ") nor a folder of them");
+      throw std::invalid_argument(p + ": neither a compact result (*" + kRunResultsExtension +
+                                  ") nor a folder of them");
     }
   }
   return out;
@@ -114,7 +115,8 @@ size_t pick_result(const std::vector<RunResults>& results, const std::string& wh
     if (best_of_run(results[i].run)) order.push_back(i);
   if (order.empty()) throw std::invalid_argument("no result has a best-of-run champion");
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    if (best_fitness(results[a]) != best_fitness(results[b])) return best_fitness(results[a]) > best_fitness(results[b]);
+    if (best_fitness(results[a]) != best_fitness(results[b]))
+      return best_fitness(results[a]) > best_fitness(results[b]);
     return results[a].run.seed < results[b].run.seed;
   });
   if (which == "best") return order.front();
