@@ -82,6 +82,7 @@ ChampionReplay replay_champion(const RunResults& results, bool with_poses) {
 
   ChampionReplay r;
   r.generation = best->generation;
+  r.generations = s.generations_requested;
   r.run = make_run_message(s.run_id, config, now_us());
   r.summary = make_generation_message(s.run_id, g, now_us());
   r.genome = make_genome_message(s.run_id, 0, genome, logged.species_id, GenomeScore{e.fitness, e.r, e.d, e.outcome},
@@ -111,6 +112,7 @@ void put_message(std::string& out, const T& m) {
 std::string replay_bytes(const ChampionReplay& r) {
   std::string out;
   put(out, &r.generation, sizeof r.generation);
+  put(out, &r.generations, sizeof r.generations);
   put_message(out, r.run);
   put_message(out, r.summary);
   put_message(out, r.genome);
@@ -147,6 +149,7 @@ ChampionReplay replay_from_bytes(const std::string& bytes) {
   Reader in(bytes);
   ChampionReplay r;
   in.get(&r.generation, sizeof r.generation);
+  in.get(&r.generations, sizeof r.generations);
   in.message(r.run);
   in.message(r.summary);
   in.message(r.genome);
@@ -269,6 +272,7 @@ std::vector<ChampionReplay> replay_champions(const std::vector<RunResults>& resu
 RunRecord champion_run_record(const ChampionReplay& replay, const std::string& source) {
   RunRecord run;
   run.run = replay.run;
+  run.run.generations = replay.generations;
   run.source = source;
   generation_t summary = replay.summary;
   summary.generation = replay.generation;

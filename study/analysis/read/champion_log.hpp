@@ -27,6 +27,7 @@ namespace robozoo {
 /// utime the time of the replay).
 struct ChampionReplay {
   int32_t generation = 0;     ///< generation the champion won in its run
+  int32_t generations = 0;    ///< generations its run was started for (count)
   run_t run;                  ///< the result's configuration, generations 1
   generation_t summary;       ///< the counts of the generation it won
   cppn_genome_t genome;       ///< with the committed (= this build's) fitness, r, d and outcome
@@ -51,7 +52,8 @@ std::vector<ChampionReplay> replay_champions(const std::vector<RunResults>& resu
                                              const std::function<void(size_t, size_t)>& done = {});
 
 /// The replay as MessageCollector gathers it from a log, with the generation
-/// the champion won in place of 0 (genome, morphology, poses, generation_t):
+/// the champion won in place of 0 (genome, morphology, poses, generation_t)
+/// and its run's generations in run_t:
 /// one run whose one genome is a complete champion (its pose stream complete
 /// when it has poses). `source` names where it came from (the result's file).
 RunRecord champion_run_record(const ChampionReplay& replay, const std::string& source);

@@ -59,8 +59,9 @@ TEST(TrialPage, ATrialKnownFromItsResultShowsItsBestOfRunRobotMadeAgain) {
         champion = true;
       }
   EXPECT_TRUE(champion) << frames.dump().substr(0, 600);
-  // The page names the trial's re-made log; no temporary folder is left behind.
-  EXPECT_NE(frames[0].dump().find("recurrent-s7-best-of-run.lcmlog"), std::string::npos) << frames[0];
+  // The page names the trial's result; it was made in memory (no temporary folder, no log).
+  EXPECT_NE(frames[0].dump().find("recurrent-s7.results.json (best of run, simulated again)"), std::string::npos)
+      << frames[0];
   for (const auto& e : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
     EXPECT_EQ(e.path().filename().string().rfind("robozoo-view-trial-", 0), std::string::npos) << e.path();
 
