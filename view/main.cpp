@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <thread>
 #include <iostream>
+#include <memory>
 #include <regex>
 
 #include "evolve/core/version.hpp"
@@ -18,6 +19,7 @@
 #include "view/feed/bus_feed.hpp"
 #include "view/feed/experiment_watch.hpp"
 #include "view/replays/trial_page.hpp"
+#include "view/replays/zoo_strip.hpp"
 #include "util/exit_status.hpp"
 #include "view/replays/export.hpp"
 #include "view/feed/log_feed.hpp"
@@ -155,11 +157,14 @@ int run(CLI::App& app, Args& a) {
   return 0;
 }
 
-/// --experiment: /experiment.json (the summary) and /trial?name=T (that
-/// trial's champion as a one-file replay, shown in the browser: trial_page).
+/// --experiment: /experiment.json (the summary), /trial?name=T (that
+/// trial's champion as a one-file replay, shown in the browser: trial_page)
+/// and /zoo.json (the thumbnail strips' robots: ZooStrips).
 Route experiment_route(const ExperimentWatch& watch, const AssetDirs& dirs) {
-  return [&watch, dirs](const std::string& target) -> std::optional<HttpReply> {
+  auto zoo = std::make_shared<ZooStrips>();
+  return [&watch, dirs, zoo](const std::string& target) -> std::optional<HttpReply> {
     if (target == "/experiment.json") return HttpReply{200, "application/json", watch.summary(), ""};
+    if (target == "/zoo.json") return HttpReply{200, "application/json", zoo->json(watch), ""};
     static const std::regex re(R"(/trial\?name=([a-z-]+-s[0-9]{1,18}))");
     std::smatch m;
     if (!std::regex_match(target, m, re)) return std::nullopt;

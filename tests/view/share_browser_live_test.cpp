@@ -175,6 +175,12 @@ TEST(ViewShare, ExperimentPageShowsATrialsBestOfRunRobotFromItsCompactResult) {
       },
       30))
       << stats().dump() << read_file(dir / "view.txt");
+  // The thumbnail strips: each arm's 30 best-of-run robots, re-made by the server.
+  ASSERT_TRUE(wait_for([&] { return !stats()["zoo"].is_null(); }, 60)) << stats().dump();
+  EXPECT_EQ(stats()["zoo"],
+            nlohmann::json::parse(R"([{"arm":"feedforward","robots":30},{"arm":"recurrent","robots":30}])"));
+  keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 1000}}),
+           dir / "view-experiment-zoo.png");
   // The curves' axes: round numbers.
   const nlohmann::json s0 = stats();
   EXPECT_TRUE(round_ticks(s0["ticks"]["y"])) << s0["ticks"];
@@ -225,6 +231,10 @@ TEST(ViewShare, ExperimentPageShowsATrialsBestOfRunRobotFromItsCompactResult) {
                  {{"type", type}, {"x", at["x"]}, {"y", at["y"]}, {"button", "left"}, {"clickCount", 1}}, tab);
   EXPECT_TRUE(wait_for([&] { return stats()["trial"] == "feedforward-s21"; }, 10)) << stats().dump();
   EXPECT_EQ(stats()["hash"], "#trial=feedforward-s21");
+
+  // A click on a thumbnail opens its trial.
+  browser.evaluate(tab, "document.querySelector('#zoo canvas[data-name=\"recurrent-s6\"]').click()");
+  EXPECT_TRUE(wait_for([&] { return stats()["trial"] == "recurrent-s6"; }, 10)) << stats().dump();
 
   // The link, shared: a new page on it opens that trial.
   const std::string shared = browser.open("http://127.0.0.1:8080/experiment.html#trial=recurrent-s2");

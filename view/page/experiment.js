@@ -11,7 +11,8 @@ import { ticks, tickLabel } from "/ticks.js";
 
 const $ = (id) => document.getElementById(id);
 const colours = ["#1f5fa8", "#c0392b", "#2a8a4a", "#8e44ad", "#d68910"];
-const state = { summary: null, updates: 0, failures: 0, trial: null, axes: null, tickLabels: { y: [], x: [] } };
+const state = { summary: null, updates: 0, failures: 0, trial: null, axes: null, tickLabels: { y: [], x: [] },
+                zoo: null };
 const num = (v, d = 2) => (typeof v === "number" && isFinite(v) ? v.toFixed(d) : "–");
 
 function colourOf(arm) {
@@ -189,6 +190,95 @@ $("curves").addEventListener("mousemove", (e) => {
 $("trial-close").addEventListener("click", () => openTrial(null));
 window.addEventListener("hashchange", () => openTrial(trialOfHash()));
 
+// ---- thumbnail strips: each arm's best-of-run robots (/zoo.json), by fitness, one scale ----
+
+const THUMB_W = 72, THUMB_H = 54;
+/// The zoo sheets' view (azimuth -62°, elevation 24°): screen right, screen up and depth of a point.
+function project(x, y, z) {
+  const az = -62 * Math.PI / 180, el = 24 * Math.PI / 180;
+  const fx = Math.cos(el) * Math.cos(az), fy = Math.cos(el) * Math.sin(az), fz = Math.sin(el);  // towards the eye
+  const rx = -Math.sin(az), ry = Math.cos(az);                                                   // right
+  const ux = -fz * Math.cos(az), uy = -fz * Math.sin(az), uz = Math.cos(el);                     // up
+  return [x * rx + y * ry, x * ux + y * uy + z * uz, x * fx + y * fy + z * fz];
+}
+
+/// Draws a robot's spheres (leaves red, others blue) centred in a canvas, `scale` px per metre.
+function drawThumb(canvas, robot, scale) {
+  const g = canvas.getContext("2d");
+  const n = robot.r.length, pts = [];
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (let i = 0; i < n; i++) {
+    const p = project(robot.c[3 * i], robot.c[3 * i + 1], robot.c[3 * i + 2]);
+    pts.push({ x: p[0], y: p[1], d: p[2], r: robot.r[i], leaf: robot.leaf[i] });
+    x0 = Math.min(x0, p[0] - robot.r[i]); x1 = Math.max(x1, p[0] + robot.r[i]);
+    y0 = Math.min(y0, p[1] - robot.r[i]); y1 = Math.max(y1, p[1] + robot.r[i]);
+  }
+  g.fillStyle = "#e8e8e6"; g.fillRect(0, 0, canvas.width, canvas.height);
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  pts.sort((a, b) => a.d - b.d);  // far first
+  for (const p of pts) {
+    const sx = canvas.width / 2 + (p.x - cx) * scale, sy = canvas.height / 2 - (p.y - cy) * scale;
+    const r = Math.max(0.6, p.r * scale);
+    const grad = g.createRadialGradient(sx - r / 3, sy - r / 3, r / 6, sx, sy, r);
+    grad.addColorStop(0, p.leaf ? "#f07a72" : "#7d9ff0");
+    grad.addColorStop(1, p.leaf ? "#a11d16" : "#1d3f99");
+    g.fillStyle = grad; g.beginPath(); g.arc(sx, sy, r, 0, 2 * Math.PI); g.fill();
+  }
+}
+
+/// A robot's size on screen (m): its projected width, or height in the thumbnail's proportion.
+function extent(robot) {
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (let i = 0; i < robot.r.length; i++) {
+    const p = project(robot.c[3 * i], robot.c[3 * i + 1], robot.c[3 * i + 2]), r = robot.r[i];
+    x0 = Math.min(x0, p[0] - r); x1 = Math.max(x1, p[0] + r); y0 = Math.min(y0, p[1] - r); y1 = Math.max(y1, p[1] + r);
+  }
+  return Math.max(x1 - x0, (y1 - y0) * THUMB_W / THUMB_H);
+}
+
+async function loadZoo() {
+  const box = $("zoo");
+  try {
+    const r = await fetch("/zoo.json", { cache: "no-store" });
+    if (!r.ok) throw new Error(r.statusText);
+    const zoo = await r.json();
+    state.zoo = zoo;
+    let largest = 0;
+    for (const a of zoo.arms) for (const robot of a.robots) largest = Math.max(largest, extent(robot));
+    const scale = largest > 0 ? 0.9 * THUMB_W / largest : 1;  // one scale for all: the largest fills its thumbnail
+    box.replaceChildren(...zoo.arms.map((a) => {
+      const row = document.createElement("div");
+      row.className = "zoo-arm";
+      const label = document.createElement("span");
+      label.className = "zoo-label";
+      label.textContent = `${a.arm}: best-of-run robots by fitness, one scale`; label.style.color = colourOf(a.arm);
+      const strip = document.createElement("div");
+      strip.className = "zoo-strip";
+      for (const robot of a.robots) {
+        const c = document.createElement("canvas");
+        c.width = THUMB_W; c.height = THUMB_H; c.dataset.name = robot.name;
+        // One scale, but a robot that would be under a third of its thumbnail is drawn larger, marked.
+        const own = 0.9 * THUMB_W / extent(robot), k = own / scale;
+        const magnify = k > 3 ? k / 3 : 1;
+        drawThumb(c, robot, scale * magnify);
+        if (magnify > 1) {
+          const g = c.getContext("2d");
+          g.fillStyle = "#222"; g.font = "9px sans-serif"; g.fillText(`×${magnify.toFixed(0)}`, 2, THUMB_H - 3);
+        }
+        c.title = `${robot.name}: fitness ${num(robot.fitness)}${magnify > 1 ? `, drawn ×${magnify.toFixed(0)}` : ""} (click to watch it)`;
+        c.addEventListener("click", () => openTrial(robot.name));
+        strip.appendChild(c);
+      }
+      row.append(label, strip);
+      return row;
+    }));
+    box.hidden = zoo.arms.length === 0;
+    if (zoo.refused.length) box.title = "not shown (this build does not reproduce them):\n" + zoo.refused.join("\n");
+  } catch (err) {
+    box.hidden = true;
+  }
+}
+
 async function refresh() {
   try {
     const r = await fetch("/experiment.json", { cache: "no-store" });
@@ -204,6 +294,7 @@ async function refresh() {
   setTimeout(refresh, 2000);
 }
 refresh();
+loadZoo();
 openTrial(trialOfHash());
 window.addEventListener("resize", draw);
 
@@ -215,6 +306,7 @@ window.robozooExperiment = {
     rows: $("trials").tBodies[0].rows.length,
     arms: state.summary ? state.summary.arms.map((a) => a.arm) : [],
     trial: state.trial, hash: location.hash, ticks: state.tickLabels,
+    zoo: state.zoo ? state.zoo.arms.map((a) => ({ arm: a.arm, robots: a.robots.length })) : null,
   }),
   open: (name) => openTrial(name),
   /// Where a trial's curve is drawn at generation i (CSS px in the page), for clicks.
