@@ -342,8 +342,9 @@ int main(int argc, char** argv) {
   ZooArgs zoo;
   CLI::App* zc = app.add_subcommand("zoo", "PNG sheet of robots in their starting pose (leaves red, others blue)");
   zc->add_option("inputs", zoo.logs,
-                 "robozoo-evolve logs, or compact results: *.results.json files or folders of them (each trial's "
-                 "best-of-run robot, grown and simulated again, its fitness checked; ordered by arm and fitness)")
+                 "robozoo-evolve logs, or compact results: *.results.json files, *.portable-checkpoint files (a "
+                 "trial in progress: its champion so far) or folders of them (each trial's best-of-run robot, grown "
+                 "and simulated again, its fitness checked; ordered by arm and fitness)")
       ->required();
   zc->add_option("-o,--output", zoo.out, "PNG to write")->capture_default_str();
   zc->add_flag("--best-of-run", zoo.best_of_run, "the best champion of each run (default with several logs)");
@@ -375,8 +376,9 @@ int main(int argc, char** argv) {
   CLI::App* vc = app.add_subcommand(
       "video", "H.264 MP4 of a champion moving (from its logged poses, or re-simulated from a compact result)");
   vc->add_option("input", video.inputs,
-                 "a robozoo-evolve log, or compact results: *.results.json files or folders of them (the --pick "
-                 "trial's best-of-run robot, grown and simulated again, its fitness checked)")
+                 "a robozoo-evolve log, or compact results: *.results.json files, *.portable-checkpoint files or "
+                 "folders of them (the --pick trial's best-of-run robot, grown and simulated again, its fitness "
+                 "checked)")
       ->required();
   vc->add_option("--pick", video.pick,
                  "compact results: whose robot, by committed best-of-run fitness: best, median (rank ceil(n/2) of n, "

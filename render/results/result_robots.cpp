@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
 #include "study/analysis/read/champion_log.hpp"
 #include "study/analysis/stats_job.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 
 namespace robozoo::render {
 
@@ -26,20 +28,28 @@ double best_fitness(const RunResults& r) {
 }  // namespace
 
 bool is_results_path(const std::string& path) {
-  return ends_with(path, kRunResultsExtension) || fs::is_directory(path);
+  return ends_with(path, kRunResultsExtension) || ends_with(path, kPortableCheckpointExtension) ||
+         fs::is_directory(path);
 }
 
 std::vector<std::string> results_files(const std::vector<std::string>& paths) {
   std::vector<std::string> out;
   for (const std::string& p : paths) {
     if (fs::is_directory(p)) {
-      const std::vector<std::string> in = list_results(p);
-      if (in.empty()) throw std::invalid_argument(p + ": no compact results (*" + kRunResultsExtension + ") in it");
+      std::vector<std::string> in = list_results(p);
+      for (const auto& e : fs::directory_iterator(p))
+        if (e.is_regular_file() && ends_with(e.path().filename().string(), kPortableCheckpointExtension))
+          in.push_back(e.path().string());
+      if (in.empty())
+        throw std::invalid_argument(p + ": no compact results (*" + kRunResultsExtension +
+                                    ") nor portable checkpoints (*" + kPortableCheckpointExtension + ") in it");
+      std::sort(in.begin(), in.end(), natural_less);
       out.insert(out.end(), in.begin(), in.end());
-    } else if (ends_with(p, kRunResultsExtension)) {
+    } else if (ends_with(p, kRunResultsExtension) || ends_with(p, kPortableCheckpointExtension)) {
       out.push_back(p);
     } else {
       throw std::invalid_argument(p + ": neither a compact result (*" + kRunResultsExtension +
+                                  "), a portable checkpoint (*" + kPortableCheckpointExtension +
                                   ") nor a folder of them");
     }
   }
@@ -50,7 +60,9 @@ std::vector<RunResults> read_results(const std::vector<std::string>& files) {
   std::vector<RunResults> out;
   out.reserve(files.size());
   for (const std::string& f : files) {
-    out.push_back(read_run_results(f));
+    // A trial in progress: the compact result of its finished generations.
+    out.push_back(ends_with(f, kPortableCheckpointExtension) ? read_portable_checkpoint(f).earlier
+                                                             : read_run_results(f));
     out.back().run.path = f;  // what messages name (the result's own says where its log was)
   }
   return out;
@@ -66,6 +78,8 @@ std::vector<ResultRobot> result_robots(const std::vector<RunResults>& results, b
     out[i].run_id = s.run_id;
     out[i].arm = s.arm;
     out[i].seed = s.seed;
+    out[i].generations = static_cast<int32_t>(s.generations.size());
+    out[i].planned = s.generations_requested;
     out[i].record = champion_run_record(replays[i], s.path);
   }
   return out;
@@ -84,6 +98,9 @@ RobotCard result_card(const ResultRobot& robot) {
   const int spheres = sphere_count(g.morphology), joints = joint_count(g.morphology);
   char line[200];
   std::snprintf(line, sizeof line, "%s \u00b7 seed %lld", robot.arm.c_str(), static_cast<long long>(robot.seed));
+  if (robot.generations < robot.planned)  // in progress: its champion so far
+    std::snprintf(line + std::strlen(line), sizeof line - std::strlen(line), " \u00b7 %d of %d generations",
+                  robot.generations, robot.planned);
   c.caption.push_back(line);
   std::snprintf(line, sizeof line, "fitness %.2f \u00b7 %d sphere%s \u00b7 %d joint%s", c.fitness, spheres,
                 spheres == 1 ? "" : "s", joints, joints == 1 ? "" : "s");

@@ -1,5 +1,7 @@
 #pragma once
-// Robots from compact results (robozoo-experiment's *.results.json): each
+// Robots from compact results (robozoo-experiment's *.results.json, and the
+// trials in progress of its portable checkpoints, *.portable-checkpoint, whose
+// compact result of the finished generations gives the champion so far): each
 // result's best-of-run champion grown and simulated again by this build in
 // memory (study's replay_champion: no log is written), its fitness checked
 // against the committed one, as the run record that zoo sheets and videos draw
@@ -15,15 +17,17 @@
 
 namespace robozoo::render {
 
-/// True when `path` names compact results: a *.results.json file or a folder.
+/// True when `path` names compact results: a *.results.json or
+/// *.portable-checkpoint file, or a folder.
 bool is_results_path(const std::string& path);
 
 /// The compact result files that `paths` name: files as given, folders' own
-/// *.results.json in name order (seeds as numbers). Throws
+/// *.results.json and *.portable-checkpoint in name order (seeds as numbers). Throws
 /// std::invalid_argument for a path that is neither, or for a folder without one.
 std::vector<std::string> results_files(const std::vector<std::string>& paths);
 
-/// Reads every file (std::invalid_argument or std::runtime_error naming the
+/// Reads every file, a portable checkpoint as the compact result it carries
+/// (std::invalid_argument or std::runtime_error naming the
 /// first one that cannot be read); each result's run.path is its file, so that
 /// a replay's errors name it.
 std::vector<RunResults> read_results(const std::vector<std::string>& files);
@@ -34,7 +38,9 @@ struct ResultRobot {
   std::string run_id;  ///< e.g. feedforward-s7
   std::string arm;     ///< the experiment arm
   int64_t seed = 0;
-  RunRecord record;  ///< one run, one complete champion (with its poses when asked)
+  int32_t generations = 0;  ///< generations in its result (count)
+  int32_t planned = 0;      ///< generations its run was started for (count): more while in progress
+  RunRecord record;         ///< one run, one complete champion (with its poses when asked)
   const GenomeRecord& champion() const { return *record.genomes.front(); }
 };
 
@@ -46,8 +52,8 @@ struct ResultRobot {
 std::vector<ResultRobot> result_robots(const std::vector<RunResults>& results, bool poses, int jobs,
                                        const std::function<void(size_t, size_t)>& progress = {});
 
-/// The robot's card with Figure 4's caption: "arm · seed S", then
-/// "fitness F · N spheres · J joints".
+/// The robot's card with Figure 4's caption: "arm · seed S" (with "· G of N
+/// generations" while in progress), then "fitness F · N spheres · J joints".
 RobotCard result_card(const ResultRobot& robot);
 
 /// Spheres and hinge joints of a morphology (counts).

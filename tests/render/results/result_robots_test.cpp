@@ -8,6 +8,10 @@
 #include <filesystem>
 
 #include "evolve/messages/build.hpp"
+#include "evolve/run/evaluator.hpp"
+#include "evolve/run/evolution.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
+#include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo::render {
@@ -106,6 +110,38 @@ TEST(ResultRobots, FigureOrderIsByArmThenFitnessAndPicksRankByFitness) {
   EXPECT_EQ(best_of_run(ff[pick_result(ff, "median")].run)->genome.fitness, f[14]);  // rank 15 of 30
   EXPECT_EQ(best_of_run(ff[pick_result(ff, "worst")].run)->genome.fitness, f.back());
   EXPECT_THROW(pick_result(ff, "mean"), std::invalid_argument);
+}
+
+TEST(ResultRobots, ATrialInProgressShowsItsChampionSoFarFromItsPortableCheckpoint) {
+  // A small run stopped after 2 of 4 generations, packed as robozoo-experiment --save-checkpoints does.
+  TempDir dir;
+  const std::string log = dir / "recurrent-s3.lcmlog";
+  RunConfig c = robozoo::testing::small_run_config(4);
+  c.seed = 3;
+  InProcessEvaluator evaluator(c.eval);
+  EvolveOptions o;
+  o.log_path = log;
+  o.run_id = "recurrent-s3";
+  {
+    Evolution evo(c, o, evaluator);
+    evo.step();
+    evo.step();
+  }
+  fs::create_directory(dir / "checkpoints");
+  const std::string file = dir / "checkpoints/recurrent-s3.portable-checkpoint";
+  write_portable_checkpoint(file, pack_portable_checkpoint(log));
+  EXPECT_TRUE(is_results_path(file));
+  ASSERT_EQ(results_files({dir / "checkpoints"}), std::vector<std::string>{file});
+  const std::vector<RunResults> results = read_results({file});
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].run.path, file);
+  const std::vector<ResultRobot> robots = result_robots(results, true, 1);
+  EXPECT_EQ(robots[0].generations, 2);
+  EXPECT_EQ(robots[0].planned, 4);
+  EXPECT_EQ(robots[0].champion().genome.fitness, best_of_run(results[0].run)->genome.fitness);
+  const RobotCard card = result_card(robots[0]);
+  ASSERT_EQ(card.caption.size(), 2u);
+  EXPECT_NE(card.caption[0].find("seed 3 \u00b7 2 of 4 generations"), std::string::npos) << card.caption[0];
 }
 
 }  // namespace
