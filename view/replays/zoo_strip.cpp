@@ -14,8 +14,9 @@ namespace robozoo::view {
 
 std::string ZooStrips::json(const ExperimentWatch& watch) {
   std::vector<TrialProgress> trials = watch.trials();
-  trials.erase(std::remove_if(trials.begin(), trials.end(), [](const TrialProgress& t) { return t.results_path.empty(); }),
-               trials.end());
+  trials.erase(
+      std::remove_if(trials.begin(), trials.end(), [](const TrialProgress& t) { return t.results_path.empty(); }),
+      trials.end());
   std::string key;
   for (const TrialProgress& t : trials) key += t.results_path + "\n" + t.results_stamp + "\n";
   std::lock_guard<std::mutex> lock(mutex_);
