@@ -131,8 +131,8 @@ std::vector<ResultRobot> replay_results(const std::vector<RunResults>& results, 
   });
   bar.finish();
   if (!quiet)
-    std::fprintf(stderr, "robozoo-render: %zu robot%s reproduce their committed fitness (%.1f s)\n", robots.size(),
-                 robots.size() == 1 ? "" : "s",
+    std::fprintf(stderr, "robozoo-render: %zu %s committed fitness (%.1f s)\n", robots.size(),
+                 robots.size() == 1 ? "robot reproduces its" : "robots reproduce their",
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return robots;
 }
