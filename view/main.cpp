@@ -177,11 +177,14 @@ int run_experiment(Args& a) {
   if (!(a.poll_seconds > 0)) throw std::invalid_argument("--poll must be a positive number of seconds");
   for (const std::string& d : a.watch.results_dirs)
     if (!std::filesystem::is_directory(d)) throw std::invalid_argument("--results " + d + ": not a folder");
-  // robozoo-experiment's own results folder (OUT/results) counts by default.
-  const std::string own = (std::filesystem::path(a.experiment) / "results").string();
-  if (std::filesystem::is_directory(own) &&
-      std::find(a.watch.results_dirs.begin(), a.watch.results_dirs.end(), own) == a.watch.results_dirs.end())
-    a.watch.results_dirs.push_back(own);
+  // robozoo-experiment's own results folder (OUT/results) counts by default, and the portable
+  // checkpoints of its trials in progress (OUT/checkpoints, as tools/experiment/paper_experiment.sh keeps them).
+  for (const char* sub : {"results", "checkpoints"}) {
+    const std::string own = (std::filesystem::path(a.experiment) / sub).string();
+    if (std::filesystem::is_directory(own) &&
+        std::find(a.watch.results_dirs.begin(), a.watch.results_dirs.end(), own) == a.watch.results_dirs.end())
+      a.watch.results_dirs.push_back(own);
+  }
   fill_dirs(a.dirs);
   const std::function<bool()> should_stop = poll_interrupts();
   ExperimentWatch watch(a.experiment, a.watch);  // throws when there is no experiment
@@ -259,8 +262,9 @@ int main(int argc, char** argv) {
                  "follow an experiment folder (robozoo-experiment --out): every "
                  "trial's fitness, the arms' means and their differences");
   app.add_option("--results", a.watch.results_dirs,
-                 "--experiment: also the trials of this folder of compact results (*.results.json) that DIR has "
-                 "no log of, e.g. finished on another machine (repeatable; DIR/results counts by default)");
+                 "--experiment: also the trials of this folder of compact results (*.results.json) or portable "
+                 "checkpoints (*.portable-checkpoint: trials in progress) that DIR has no log of, e.g. run on "
+                 "another machine (repeatable; DIR/results and DIR/checkpoints count by default)");
   app.add_option("--poll", a.poll_seconds, "--experiment: look at the folder this often (s)")->capture_default_str();
   app.add_option("--running-seconds", a.watch.running_seconds,
                  "--experiment: a trial whose log changed this recently is running (s)")

@@ -59,12 +59,7 @@ std::vector<std::string> results_files(const std::vector<std::string>& paths) {
 std::vector<RunResults> read_results(const std::vector<std::string>& files) {
   std::vector<RunResults> out;
   out.reserve(files.size());
-  for (const std::string& f : files) {
-    // A trial in progress: the compact result of its finished generations.
-    out.push_back(ends_with(f, kPortableCheckpointExtension) ? read_portable_checkpoint(f).earlier
-                                                             : read_run_results(f));
-    out.back().run.path = f;  // what messages name (the result's own says where its log was)
-  }
+  for (const std::string& f : files) out.push_back(read_results_or_portable_checkpoint(f));
   return out;
 }
 

@@ -102,7 +102,7 @@ function table() {
   const rows = s.trials.map((t) => {
     const tr = document.createElement("tr");
     tr.dataset.name = t.name;
-    const state = t.source === "result" ? `${t.state} (result)` : t.state;
+    const state = t.source === "result" ? `${t.state} (result)` : t.source === "checkpoint" ? "in progress (checkpoint)" : t.state;
     const cells = [t.name, state, `${t.generations} of ${t.planned || "?"}`, num(t.best)];
     cells.forEach((v, i) => {
       const td = document.createElement("td");
@@ -115,6 +115,7 @@ function table() {
       if (i === 1) {
         td.className = "state-" + t.state;
         if (t.source === "result") td.title = "known from its compact result alone (finished elsewhere); click to re-make its best-of-run robot";
+        if (t.source === "checkpoint") td.title = "known from its portable checkpoint alone (in progress elsewhere); click to re-make its champion so far";
       }
       tr.appendChild(td);
     });

@@ -5,6 +5,7 @@
 
 #include "study/analysis/read/champion_log.hpp"
 #include "study/analysis/read/run_results.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 #include "view/replays/export.hpp"
 
 namespace robozoo::view {
@@ -25,8 +26,7 @@ HttpReply trial_page(const ExperimentWatch& watch, const AssetDirs& dirs, const 
       return HttpReply{200, "text/html; charset=utf-8", offline_page(dirs, champion_frames(o)), ""};
     }
     if (result.empty()) return not_found("no trial " + name);
-    RunResults r = read_run_results(result);
-    r.run.path = result;  // what a refusal names
+    const RunResults r = read_results_or_portable_checkpoint(result);  // run.path, what a refusal names: the file
     const RunRecord run = champion_run_record(replay_champion(r, true), result);
     const std::string source = std::filesystem::path(result).filename().string() + " (best of run, simulated again)";
     return HttpReply{200, "text/html; charset=utf-8",

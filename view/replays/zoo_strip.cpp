@@ -9,6 +9,7 @@
 #include "runlog/robots/leaf_spheres.hpp"
 #include "study/analysis/read/champion_log.hpp"
 #include "study/analysis/read/run_results.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 
 namespace robozoo::view {
 
@@ -25,8 +26,7 @@ std::string ZooStrips::json(const ExperimentWatch& watch) {
   nlohmann::json refused = nlohmann::json::array();
   for (const TrialProgress& t : trials) {
     try {
-      RunResults r = read_run_results(t.results_path);
-      r.run.path = t.results_path;
+      const RunResults r = read_results_or_portable_checkpoint(t.results_path);
       const ChampionReplay c = replay_champion(r, false);
       nlohmann::json robot = {{"name", t.name}, {"seed", t.seed}, {"fitness", c.genome.fitness}};
       nlohmann::json centres = nlohmann::json::array(), radii = nlohmann::json::array();
