@@ -27,7 +27,7 @@ HttpReply trial_page(const ExperimentWatch& watch, const AssetDirs& dirs, const 
     }
     if (result.empty()) return not_found("no trial " + name);
     const RunResults r = read_results_or_portable_checkpoint(result);  // run.path, what a refusal names: the file
-    const RunRecord run = champion_run_record(replay_champion(r, true), result);
+    const RunRecord run = champion_run_record(replay_champion(r, true), result, &r.run);  // with its curves
     const std::string source = std::filesystem::path(result).filename().string() + " (best of run, simulated again)";
     return HttpReply{200, "text/html; charset=utf-8",
                      offline_page(dirs, genome_frames(run, *run.genomes.front(), source)), ""};

@@ -33,6 +33,22 @@ std::string g17(double x) {
   return b;
 }
 
+/// A generation of a compact result as its run logged it.
+GenerationSummary summary_of(const GenerationRecord& r) {
+  GenerationSummary g;
+  g.generation = r.generation;
+  g.evaluations = r.evaluations;
+  g.best_fitness = r.best_fitness;
+  g.mean_fitness = r.mean_fitness;
+  g.stderr_fitness = r.stderr_fitness;
+  g.best_so_far_fitness = r.best_so_far_fitness;
+  g.champion_id = r.champion_id;
+  g.num_species = r.num_species;
+  g.compatibility_threshold = r.compatibility_threshold;
+  for (size_t k = 0; k < r.outcomes.size(); ++k) g.outcome_counts[k] = r.outcomes[k];
+  return g;
+}
+
 }  // namespace
 
 ChampionReplay replay_champion(const RunResults& results, bool with_poses) {
@@ -68,17 +84,13 @@ ChampionReplay replay_champion(const RunResults& results, bool with_poses) {
   if (e.d != logged.d_term) differ("d", g17(logged.d_term), g17(e.d));
   const Robot robot = grow_genome(genome, config.eval);
 
-  GenerationSummary g;
+  // The generation it won, as generation 0 of a one-generation run with the champion's fitness.
+  GenerationSummary g = summary_of(*gen);
   g.generation = 0;
   g.evaluations = config.neat.population;
   g.best_fitness = logged.fitness;
-  g.mean_fitness = gen->mean_fitness;
-  g.stderr_fitness = gen->stderr_fitness;
   g.best_so_far_fitness = logged.fitness;
   g.champion_id = genome.id;
-  g.num_species = gen->num_species;
-  g.compatibility_threshold = gen->compatibility_threshold;
-  for (size_t k = 0; k < gen->outcomes.size(); ++k) g.outcome_counts[k] = gen->outcomes[k];
 
   ChampionReplay r;
   r.generation = best->generation;
@@ -269,14 +281,19 @@ std::vector<ChampionReplay> replay_champions(const std::vector<RunResults>& resu
   return out;
 }
 
-RunRecord champion_run_record(const ChampionReplay& replay, const std::string& source) {
+RunRecord champion_run_record(const ChampionReplay& replay, const std::string& source, const RunSummary* history) {
   RunRecord run;
   run.run = replay.run;
   run.run.generations = replay.generations;
   run.source = source;
-  generation_t summary = replay.summary;
-  summary.generation = replay.generation;
-  run.generations.push_back(summary);
+  if (history) {
+    for (const GenerationRecord& g : history->generations)
+      run.generations.push_back(make_generation_message(run.run.run_id, summary_of(g), replay.run.utime));
+  } else {
+    generation_t summary = replay.summary;
+    summary.generation = replay.generation;
+    run.generations.push_back(summary);
+  }
   auto g = std::make_unique<GenomeRecord>();
   g->genome = replay.genome;
   g->genome.generation = replay.generation;

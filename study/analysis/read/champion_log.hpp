@@ -56,7 +56,10 @@ std::vector<ChampionReplay> replay_champions(const std::vector<RunResults>& resu
 /// and its run's generations in run_t:
 /// one run whose one genome is a complete champion (its pose stream complete
 /// when it has poses). `source` names where it came from (the result's file).
-RunRecord champion_run_record(const ChampionReplay& replay, const std::string& source);
+/// With `history` (the result's run), its generation records are every
+/// generation of the run as logged; without, the one the champion won.
+RunRecord champion_run_record(const ChampionReplay& replay, const std::string& source,
+                              const RunSummary* history = nullptr);
 
 struct ChampionLogInfo {
   int32_t generation = 0;  ///< generation the champion won in its run
