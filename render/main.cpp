@@ -1,6 +1,9 @@
 // robozoo-render: draws what evolution produced, headless (OSMesa/llvmpipe):
 //   zoo    a PNG sheet of robots in their starting pose (the paper's Figure 4)
 //   video  an H.264 MP4 of a champion moving
+// zoo and video draw from logs or from compact results (*.results.json), whose
+// best-of-run robots are grown and simulated again in memory, their fitness
+// checked against the committed one first.
 //   live   latest.png and one video per new champion, from an LCM bus
 //   bench  frames per second of drawing and encoding
 #include <signal.h>
@@ -12,9 +15,12 @@ extern "C" {
 #include <libavutil/log.h>
 }
 
+#include <algorithm>
+#include <chrono>
 #include <ctime>
 #include <iostream>
 #include <stdexcept>
+#include <thread>
 
 #include "evolve/io/bus.hpp"
 #include "render/video/bench.hpp"
@@ -25,6 +31,7 @@ extern "C" {
 #include "runlog/robots/selection.hpp"
 #include "render/video/video_subject.hpp"
 #include "render/zoo/zoo_sheet.hpp"
+#include "render/results/result_robots.hpp"
 #include "evolve/core/version.hpp"
 #include "util/exit_status.hpp"
 #include "util/stop_signals.hpp"
@@ -98,6 +105,38 @@ void finish_video_options(VideoOptions& o, const FastFlag& f) {
   validate(o);
 }
 
+/// Whether the inputs are compact results (true) or logs (false); refuses a mix.
+bool inputs_are_results(const std::vector<std::string>& inputs) {
+  size_t results = 0;
+  for (const auto& p : inputs) results += is_results_path(p) ? 1 : 0;
+  if (results > 0 && results < inputs.size())
+    throw std::invalid_argument("give logs or compact results (*.results.json, folders of them), not both");
+  return results > 0;
+}
+
+/// The best-of-run robots of compact results, re-grown and re-simulated in
+/// memory, with a progress bar on a terminal and a line before and after.
+std::vector<ResultRobot> replay_results(const std::vector<RunResults>& results, bool poses, int jobs, bool quiet) {
+  const bool tty = ::isatty(2) && !quiet;
+  const int at_once = std::min(static_cast<int>(results.size()),
+                               jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  if (!quiet)
+    std::cerr << "robozoo-render: growing and simulating " << results.size() << " best-of-run robot"
+              << (results.size() == 1 ? "" : "s") << " again, " << at_once
+              << " at once, each checked against its committed fitness\n";
+  const auto start = std::chrono::steady_clock::now();
+  ProgressBar bar(std::cerr, "re-simulating");
+  std::vector<ResultRobot> robots = result_robots(results, poses, at_once, [&](size_t done, size_t total) {
+    if (tty) bar.update(static_cast<int64_t>(done), static_cast<int64_t>(total));
+  });
+  bar.finish();
+  if (!quiet)
+    std::fprintf(stderr, "robozoo-render: %zu %s committed fitness (%.1f s)\n", robots.size(),
+                 robots.size() == 1 ? "robot reproduces its" : "robots reproduce their",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return robots;
+}
+
 void report_log(const LoadedLog& log) {
   if (log.collector->stats().rejected() > 0 || log.truncated) std::cerr << "robozoo-render: " << describe(log) << "\n";
 }
@@ -111,11 +150,32 @@ struct ZooArgs {
   int top = 0;
   int generation = -1;
   bool allow_truncated = false;
+  int jobs = 0;
+  bool quiet = false;
   ZooOptions sheet;
 };
 
+/// A zoo of compact results: every best-of-run robot, by arm and fitness.
+int run_results_zoo(const ZooArgs& a) {
+  if (a.top > 0 || a.generation >= 0)
+    throw std::invalid_argument(
+        "compact results hold one robot per trial, their best of run: no --top or --generation");
+  if (a.allow_truncated) throw std::invalid_argument("--allow-truncated is for logs, not compact results");
+  const std::vector<RunResults> all = read_results(results_files(a.logs));
+  std::vector<RunResults> ordered;
+  for (size_t i : figure_order(all)) ordered.push_back(all[i]);
+  const std::vector<ResultRobot> robots = replay_results(ordered, false, a.jobs, a.quiet);
+  std::vector<RobotCard> cards;
+  for (const ResultRobot& r : robots) cards.push_back(result_card(r));
+  write_png(a.out, render_zoo(cards, a.sheet));
+  std::cerr << "robozoo-render: " << a.out << " (" << cards.size() << " robots)\n";
+  return 0;
+}
+
 int run_zoo(const ZooArgs& a) {
   validate(a.sheet);
+  if (a.jobs < 0) throw std::invalid_argument("--jobs must be 0 (one per core) or more");
+  if (inputs_are_results(a.logs)) return run_results_zoo(a);
   const int modes = (a.best_of_run ? 1 : 0) + (a.top > 0 ? 1 : 0) + (a.generation >= 0 ? 1 : 0);
   if (modes > 1) throw std::invalid_argument("choose one of --best-of-run, --top and --generation");
 
@@ -153,7 +213,8 @@ int run_zoo(const ZooArgs& a) {
 // ---- video -----------------------------------------------------------------
 
 struct VideoCmdArgs {
-  std::string log;
+  std::vector<std::string> inputs;
+  std::string pick;
   std::string out = "champion.mp4";
   int64_t genome = -1;
   int generation = -1;
@@ -162,30 +223,60 @@ struct VideoCmdArgs {
   FastFlag fast;
 };
 
-int run_video(VideoCmdArgs& a) {
-  finish_video_options(a.video, a.fast);
-  const VideoOptions& o = a.video;
+/// The video's robot from compact results: the one `pick` names among them,
+/// re-grown and re-simulated (its fitness checked first).
+VideoSubject results_video_subject(const VideoCmdArgs& a) {
+  if (a.genome >= 0 || a.generation >= 0 || a.resimulate || a.allow_truncated)
+    throw std::invalid_argument(
+        "compact results hold one robot per trial, re-simulated anyway: no --genome, --generation, --resimulate or "
+        "--allow-truncated (choose among several with --pick)");
+  const std::vector<RunResults> all = read_results(results_files(a.inputs));
+  const RunResults& chosen = all[pick_result(all, a.pick.empty() ? "best" : a.pick)];
+  if (!a.quiet && all.size() > 1)
+    std::cerr << "robozoo-render: " << (a.pick.empty() ? "best" : a.pick) << " of " << all.size()
+              << " best-of-run robots by committed fitness: " << chosen.run.run_id << " (" << chosen.run.path << ")\n";
+  const std::vector<ResultRobot> robots = replay_results({chosen}, true, 1, a.quiet);
+  const ResultRobot& r = robots.front();
+  return make_video_subject(r.record, r.champion());
+}
+
+/// The video's robot from a log: the genome, the champion of a generation, or
+/// the best champion of the log.
+VideoSubject log_video_subject(const VideoCmdArgs& a) {
+  if (!a.pick.empty()) throw std::invalid_argument("--pick chooses among compact results; with a log, use --genome");
+  if (a.inputs.size() != 1) throw std::invalid_argument("video takes one log");
+  const std::string& path = a.inputs.front();
   LoadOptions lo;
   lo.allow_truncated = a.allow_truncated;
-  const LoadedLog log = load_log(a.log, lo);
+  const LoadedLog log = load_log(path, lo);
   report_log(log);
   std::vector<Pick> picks;
   if (a.genome >= 0) {
     picks = genome_by_id(log.runs(), a.genome);
     if (picks.empty())
-      throw std::runtime_error(a.log + ": no genome " + std::to_string(a.genome) + " with a morphology");
+      throw std::runtime_error(path + ": no genome " + std::to_string(a.genome) + " with a morphology");
   } else if (a.generation >= 0) {
     picks = generation_champions(log.runs(), a.generation);
-    if (picks.empty()) throw std::runtime_error(a.log + ": no champion of generation " + std::to_string(a.generation));
+    if (picks.empty()) throw std::runtime_error(path + ": no champion of generation " + std::to_string(a.generation));
   } else {
     picks = best_of_run(log.runs());
     if (picks.empty())
-      throw std::runtime_error(a.log + ": no champion (ROBOZOO_GENOME with its ROBOZOO_MORPHOLOGY) in the log");
+      throw std::runtime_error(path + ": no champion (ROBOZOO_GENOME with its ROBOZOO_MORPHOLOGY) in the log");
   }
   Pick pick = picks.front();
   for (const Pick& p : picks)
     if (p.genome->genome.fitness > pick.genome->genome.fitness) pick = p;
-  VideoSubject subject = make_video_subject(*pick.run, *pick.genome, a.resimulate);
+  return make_video_subject(*pick.run, *pick.genome, a.resimulate);
+}
+
+int run_video(VideoCmdArgs& a) {
+  finish_video_options(a.video, a.fast);
+  const VideoOptions& o = a.video;
+  VideoSubject subject;
+  if (inputs_are_results(a.inputs))
+    subject = results_video_subject(a);
+  else
+    subject = log_video_subject(a);
   const bool tty = ::isatty(2) && !a.quiet;
   const int frames = video_frame_count(subject.trajectory.end_time() - subject.trajectory.start_time(), o);
   ProgressBar bar(std::cerr, "rendering");
@@ -250,7 +341,11 @@ int main(int argc, char** argv) {
 
   ZooArgs zoo;
   CLI::App* zc = app.add_subcommand("zoo", "PNG sheet of robots in their starting pose (leaves red, others blue)");
-  zc->add_option("logs", zoo.logs, "robozoo-evolve logs")->required();
+  zc->add_option("inputs", zoo.logs,
+                 "robozoo-evolve logs, or compact results: *.results.json files, *.portable-checkpoint files (a "
+                 "trial in progress: its champion so far) or folders of them (each trial's best-of-run robot, grown "
+                 "and simulated again, its fitness checked; ordered by arm and fitness)")
+      ->required();
   zc->add_option("-o,--output", zoo.out, "PNG to write")->capture_default_str();
   zc->add_flag("--best-of-run", zoo.best_of_run, "the best champion of each run (default with several logs)");
   zc->add_option("--top", zoo.top, "the N best distinct champions of one log (default with one log: 8)")
@@ -262,16 +357,33 @@ int main(int argc, char** argv) {
   zc->add_option("--columns", zoo.sheet.columns, "robots per row (0: automatic)")->capture_default_str();
   zc->add_option("--title", zoo.sheet.title, "a title above the grid");
   zc->add_flag("--same-scale", zoo.sheet.same_scale, "one camera distance for all robots (sizes comparable)");
+  zc->add_option("--inset-below", zoo.sheet.inset_below,
+                 "--same-scale: a robot drawn at less than this fraction of the size that fills its cell also gets an "
+                 "inset that it fills, marked with its magnification (0: none)")
+      ->capture_default_str();
   zc->add_flag_callback(
       "--no-grid", [&zoo] { zoo.sheet.grid = false; }, "no grid on the ground");
   zc->add_option("--samples", zoo.sheet.samples, "multisampling, samples per pixel (0: none)")->capture_default_str();
   zc->add_option("--font-size", zoo.sheet.font_size, "caption size in pixels")->capture_default_str();
   zc->add_option("--font-dir", zoo.sheet.font_dir, "folder with DejaVuSans.ttf and DejaVuSans-Bold.ttf");
   zc->add_flag("--allow-truncated", zoo.allow_truncated, "use the complete events of a log that ends mid-event");
+  zc->add_option("-j,--jobs", zoo.jobs,
+                 "compact results: robots simulated at once (0: one per core); the same sheet for any number")
+      ->capture_default_str();
+  zc->add_flag("-q,--quiet", zoo.quiet, "compact results: no progress bar, no report of the re-simulation");
 
   VideoCmdArgs video;
-  CLI::App* vc = app.add_subcommand("video", "H.264 MP4 of a champion moving (from its logged poses)");
-  vc->add_option("log", video.log, "robozoo-evolve log")->required();
+  CLI::App* vc = app.add_subcommand(
+      "video", "H.264 MP4 of a champion moving (from its logged poses, or re-simulated from a compact result)");
+  vc->add_option("input", video.inputs,
+                 "a robozoo-evolve log, or compact results: *.results.json files, *.portable-checkpoint files or "
+                 "folders of them (the --pick trial's best-of-run robot, grown and simulated again, its fitness "
+                 "checked)")
+      ->required();
+  vc->add_option("--pick", video.pick,
+                 "compact results: whose robot, by committed best-of-run fitness: best, median (rank ceil(n/2) of n, "
+                 "best first) or worst (default: best)")
+      ->check(CLI::IsMember({"best", "median", "worst"}));
   vc->add_option("-o,--output", video.out, "MP4 to write")->capture_default_str();
   vc->add_option("--genome", video.genome, "this genome instead of the run's best champion");
   vc->add_option("--generation", video.generation, "the champion of generation G instead of the best");

@@ -7,7 +7,8 @@
 #   util, the generated lcmtypes (robozoo/...)
 #   evolve                    (robozoo_core, robozoo_mpi, robozoo-evolve)
 #   runlog                    (the one reader of logs)
-#   study, render, replay
+#   study                     (the experiment and its analysis)
+#   render, replay            (draw and check runs, logged or compact)
 #   view, tools
 #   tests, fuzz               (may include anything)
 #
@@ -36,7 +37,8 @@ floors=(
   "util robozoo"
   "evolve"
   "runlog"
-  "study render replay"
+  "study"
+  "render replay"
   "view tools"
   "tests fuzz"
 )

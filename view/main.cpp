@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <thread>
 #include <iostream>
+#include <memory>
 #include <regex>
 
 #include "evolve/core/version.hpp"
@@ -18,6 +19,7 @@
 #include "view/feed/bus_feed.hpp"
 #include "view/feed/experiment_watch.hpp"
 #include "view/replays/trial_page.hpp"
+#include "view/replays/zoo_strip.hpp"
 #include "util/exit_status.hpp"
 #include "view/replays/export.hpp"
 #include "view/feed/log_feed.hpp"
@@ -155,11 +157,14 @@ int run(CLI::App& app, Args& a) {
   return 0;
 }
 
-/// --experiment: /experiment.json (the summary) and /trial?name=T (that
-/// trial's champion as a one-file replay, shown in the browser: trial_page).
+/// --experiment: /experiment.json (the summary), /trial?name=T (that
+/// trial's champion as a one-file replay, shown in the browser: trial_page)
+/// and /zoo.json (the thumbnail strips' robots: ZooStrips).
 Route experiment_route(const ExperimentWatch& watch, const AssetDirs& dirs) {
-  return [&watch, dirs](const std::string& target) -> std::optional<HttpReply> {
+  auto zoo = std::make_shared<ZooStrips>();
+  return [&watch, dirs, zoo](const std::string& target) -> std::optional<HttpReply> {
     if (target == "/experiment.json") return HttpReply{200, "application/json", watch.summary(), ""};
+    if (target == "/zoo.json") return HttpReply{200, "application/json", zoo->json(watch), ""};
     static const std::regex re(R"(/trial\?name=([a-z-]+-s[0-9]{1,18}))");
     std::smatch m;
     if (!std::regex_match(target, m, re)) return std::nullopt;
@@ -172,11 +177,14 @@ int run_experiment(Args& a) {
   if (!(a.poll_seconds > 0)) throw std::invalid_argument("--poll must be a positive number of seconds");
   for (const std::string& d : a.watch.results_dirs)
     if (!std::filesystem::is_directory(d)) throw std::invalid_argument("--results " + d + ": not a folder");
-  // robozoo-experiment's own results folder (OUT/results) counts by default.
-  const std::string own = (std::filesystem::path(a.experiment) / "results").string();
-  if (std::filesystem::is_directory(own) &&
-      std::find(a.watch.results_dirs.begin(), a.watch.results_dirs.end(), own) == a.watch.results_dirs.end())
-    a.watch.results_dirs.push_back(own);
+  // robozoo-experiment's own results folder (OUT/results) counts by default, and the portable
+  // checkpoints of its trials in progress (OUT/checkpoints, as tools/experiment/paper_experiment.sh keeps them).
+  for (const char* sub : {"results", "checkpoints"}) {
+    const std::string own = (std::filesystem::path(a.experiment) / sub).string();
+    if (std::filesystem::is_directory(own) &&
+        std::find(a.watch.results_dirs.begin(), a.watch.results_dirs.end(), own) == a.watch.results_dirs.end())
+      a.watch.results_dirs.push_back(own);
+  }
   fill_dirs(a.dirs);
   const std::function<bool()> should_stop = poll_interrupts();
   ExperimentWatch watch(a.experiment, a.watch);  // throws when there is no experiment
@@ -254,8 +262,9 @@ int main(int argc, char** argv) {
                  "follow an experiment folder (robozoo-experiment --out): every "
                  "trial's fitness, the arms' means and their differences");
   app.add_option("--results", a.watch.results_dirs,
-                 "--experiment: also the trials of this folder of compact results (*.results.json) that DIR has "
-                 "no log of, e.g. finished on another machine (repeatable; DIR/results counts by default)");
+                 "--experiment: also the trials of this folder of compact results (*.results.json) or portable "
+                 "checkpoints (*.portable-checkpoint: trials in progress) that DIR has no log of, e.g. run on "
+                 "another machine (repeatable; DIR/results and DIR/checkpoints count by default)");
   app.add_option("--poll", a.poll_seconds, "--experiment: look at the folder this often (s)")->capture_default_str();
   app.add_option("--running-seconds", a.watch.running_seconds,
                  "--experiment: a trial whose log changed this recently is running (s)")

@@ -23,6 +23,7 @@ RobotCard make_card(const RunRecord& run, const GenomeRecord& genome) {
 std::string regime_label(int regime) { return regime == 1 ? "recurrent" : "feed-forward"; }
 
 std::vector<std::string> card_caption(const RobotCard& card) {
+  if (!card.caption.empty()) return card.caption;
   char line[160];
   std::snprintf(line, sizeof line, "%s \u00b7 generation %d \u00b7 fitness %.2f", regime_label(card.regime).c_str(),
                 card.generation, card.fitness);

@@ -19,6 +19,7 @@ struct RobotCard {
   double r_term = 0.0;   ///< (points)
   double d_term = 0.0;   ///< (m)
   RobotShape shape;
+  std::vector<std::string> caption;  ///< replaces the default caption lines when not empty
 };
 
 /// Throws std::invalid_argument when the genome has no (consistent) morphology.
@@ -26,7 +27,8 @@ RobotCard make_card(const RunRecord& run, const GenomeRecord& genome);
 
 /// "feed-forward" or "recurrent".
 std::string regime_label(int regime);
-/// The two caption lines: the run id, then "regime · generation G · fitness F".
+/// The two caption lines: card.caption when it has any, else the run id, then
+/// "regime · generation G · fitness F".
 std::vector<std::string> card_caption(const RobotCard& card);
 
 }  // namespace robozoo::render

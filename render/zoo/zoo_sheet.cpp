@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace robozoo::render {
@@ -52,6 +53,41 @@ void frame(Image& sheet, int x, int y, int w, int h) {
   sheet.fill_rect(x + w, y, 1, h, kBorder);
 }
 
+/// `image` shrunk by an integer factor (the mean of each factor x factor block).
+Image shrink(const Image& image, int factor) {
+  const int w = image.width() / factor, h = image.height() / factor;
+  Image out(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      int sum[3] = {0, 0, 0};
+      for (int dy = 0; dy < factor; ++dy) {
+        const uint8_t* p = image.row(y * factor + dy) + 3 * x * factor;
+        for (int dx = 0; dx < factor; ++dx)
+          for (int c = 0; c < 3; ++c) sum[c] += p[3 * dx + c];
+      }
+      uint8_t* q = out.row(y) + 3 * x;
+      for (int c = 0; c < 3; ++c) q[c] = static_cast<uint8_t>(sum[c] / (factor * factor));
+    }
+  return out;
+}
+
+/// The robot framed to fill a third of the cell, in the cell's top-right
+/// corner, with its magnification over the common scale written under it.
+void draw_inset(Image& sheet, Fonts& fonts, Stage& stage, const RobotCard& card, const Camera& own, double magnify,
+                int x, int y, int w, bool grid) {
+  const Image small = shrink(render_card(stage, card, own, grid), 3);
+  const int ix = x + w - small.width() - 4, iy = y + 4;
+  sheet.paste(small, ix, iy);
+  frame(sheet, ix, iy, small.width(), small.height());
+  char label[32];
+  std::snprintf(label, sizeof label, "\u00d7%.0f", magnify);
+  const int tw = fonts.regular.measure(label);
+  const int lh = fonts.regular.line_height();
+  sheet.fill_rect(ix + small.width() - tw - 6, iy + small.height() - lh - 2, tw + 6, lh + 2, kPaper, 0.8);
+  fonts.regular.draw(sheet, ix + small.width() - tw - 3, iy + small.height() - lh - 2 + fonts.regular.ascender(), label,
+                     kInk);
+}
+
 }  // namespace
 
 void validate(const ZooOptions& o) {
@@ -62,6 +98,7 @@ void validate(const ZooOptions& o) {
   if (o.gap < 0 || o.gap > 512) throw std::invalid_argument("gap must be in [0, 512] pixels");
   if (o.font_size < 6 || o.font_size > 128) throw std::invalid_argument("font size must be in [6, 128] pixels");
   if (!(o.margin >= 0 && o.margin < 0.45)) throw std::invalid_argument("margin must be in [0, 0.45)");
+  if (!(o.inset_below >= 0 && o.inset_below <= 1)) throw std::invalid_argument("inset threshold must be in [0, 1]");
 }
 
 Camera card_camera(const RobotCard& card, int width, int height, const ViewAngles& angles, double margin) {
@@ -97,6 +134,7 @@ Image render_zoo(const std::vector<RobotCard>& cards, const ZooOptions& o) {
 
   std::vector<Camera> cameras;
   for (const RobotCard& c : cards) cameras.push_back(card_camera(c, o.cell_width, o.cell_height, o.angles, o.margin));
+  const std::vector<Camera> own = cameras;
   if (o.same_scale) {
     double d = 0;
     for (const Camera& c : cameras) d = std::max(d, (c.eye - c.target).norm());
@@ -110,9 +148,14 @@ Image render_zoo(const std::vector<RobotCard>& cards, const ZooOptions& o) {
   for (int i = 0; i < n; ++i) {
     const int x = o.gap + (i % columns) * (o.cell_width + o.gap);
     const int y = o.gap + title_h + (i / columns) * (o.cell_height + cap + o.gap);
-    sheet.paste(render_card(stage, cards[static_cast<size_t>(i)], cameras[static_cast<size_t>(i)], o.grid), x, y);
+    const size_t k = static_cast<size_t>(i);
+    sheet.paste(render_card(stage, cards[k], cameras[k], o.grid), x, y);
+    // Drawn smaller than inset_below of the size that would fill the cell: an inset that it fills.
+    const double fill = (own[k].eye - own[k].target).norm() / (cameras[k].eye - cameras[k].target).norm();
+    if (o.same_scale && o.inset_below > 0 && fill < o.inset_below)
+      draw_inset(sheet, fonts, stage, cards[k], own[k], 1.0 / fill, x, y, o.cell_width, o.grid);
     frame(sheet, x, y, o.cell_width, o.cell_height);
-    draw_caption(sheet, fonts, cards[static_cast<size_t>(i)], x, y + o.cell_height, o.cell_width);
+    draw_caption(sheet, fonts, cards[k], x, y + o.cell_height, o.cell_width);
   }
   return sheet;
 }

@@ -22,10 +22,14 @@ struct ZooOptions {
   int samples = 4;          ///< multisampling (samples per pixel)
   std::string title;        ///< line above the grid; empty: none
   bool same_scale = false;  ///< one camera distance for all (sizes comparable) instead of filling each cell
-  bool grid = true;         ///< grid lines on the ground
-  ViewAngles angles;        ///< the direction every robot is seen from
-  double margin = 0.07;     ///< free fraction of a cell on each side
-  std::string font_dir;     ///< DejaVu fonts; empty: the system's
+  /// With same_scale: a robot drawn at less than this fraction of the size that
+  /// fills its cell also gets an inset in the cell's corner, framed to fill it
+  /// and marked with its magnification (0: no insets).
+  double inset_below = 0.35;
+  bool grid = true;      ///< grid lines on the ground
+  ViewAngles angles;     ///< the direction every robot is seen from
+  double margin = 0.07;  ///< free fraction of a cell on each side
+  std::string font_dir;  ///< DejaVu fonts; empty: the system's
 };
 
 /// Throws std::invalid_argument for sizes out of range.

@@ -26,9 +26,6 @@ namespace fs = std::filesystem;
 
 namespace robozoo {
 
-namespace {
-
-/// Name order with runs of digits compared as numbers ("s2" < "s10").
 bool natural_less(const std::string& a, const std::string& b) {
   size_t i = 0, j = 0;
   auto digit = [](char c) { return c >= '0' && c <= '9'; };
@@ -55,8 +52,6 @@ bool natural_less(const std::string& a, const std::string& b) {
   }
   return a.size() - i < b.size() - j;
 }
-
-}  // namespace
 
 namespace {
 

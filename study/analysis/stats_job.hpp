@@ -36,6 +36,9 @@ struct StatsOutcome {
   std::string out_dir;
 };
 
+/// Name order with runs of digits compared as numbers ("s2" < "s10").
+bool natural_less(const std::string& a, const std::string& b);
+
 /// The logs (*.lcmlog) directly in `dir`, sorted by name with runs of digits
 /// compared as numbers (recurrent-s2 before recurrent-s10, so zoo sheets show
 /// the seeds in order). Throws std::invalid_argument when `dir` is not a folder.

@@ -220,4 +220,12 @@ void unpack_portable_checkpoint(const PortableCheckpoint& p, const std::string& 
   write_checkpoint(cp, c);
 }
 
+RunResults read_results_or_portable_checkpoint(const std::string& path) {
+  const std::string ext = kPortableCheckpointExtension;
+  const bool portable = path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
+  RunResults r = portable ? read_portable_checkpoint(path).earlier : read_run_results(path);
+  r.run.path = path;
+  return r;
+}
+
 }  // namespace robozoo

@@ -76,6 +76,11 @@ void write_portable_checkpoint(const std::string& path, const PortableCheckpoint
 /// Reads and decodes; std::invalid_argument (bad content) or std::runtime_error (unreadable), naming `path`.
 PortableCheckpoint read_portable_checkpoint(const std::string& path);
 
+/// The compact result a file gives: a *.portable-checkpoint's of its finished
+/// generations (a trial in progress), else the file read as a compact result
+/// (*.results.json); its run.path is `path`. Throws as the two readers do.
+RunResults read_results_or_portable_checkpoint(const std::string& path);
+
 /// Empty when `p` (read from `path`) may continue trial `t` of experiment `e`:
 /// its run id is the trial's name, its configuration the trial's
 /// (trial_mismatch), and its software version this robozoo's (unless

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iterator>
 
+#include <nlohmann/json.hpp>
+
 #include "render/gl/png_io.hpp"
 #include "tests/render/decode_video.hpp"
 #include "tests/render/fixtures.hpp"
@@ -188,6 +190,129 @@ TEST_F(RenderCli, OddAndMalformedVideoSizes) {
       cli("zoo " + path("run.lcmlog") + " " + path("run8.lcmlog") + " --top 2 -o " + path("x.png"));
   EXPECT_NE(top.status, 0);
   EXPECT_NE(top.output.find("--top takes one log"), std::string::npos) << top.output;
+}
+
+// ---- compact results (the committed paper-size experiment's M2) ------------
+
+const std::string kM2Results = std::string(ROBOZOO_SOURCE_DIR) + "/media/experiment/paper/m2/results";
+
+robozoo::testing::Outcome render_cli(const std::string& args) { return run_shell(bin("robozoo-render") + " " + args); }
+
+/// Pixels of a robot's colours (red leaves, blue others, shaded) in a cell.
+int robot_pixels(const Image& sheet, int x0, int y0, int w, int h) {
+  int n = 0;
+  for (int y = y0; y < y0 + h; ++y)
+    for (int x = x0; x < x0 + w; ++x) {
+      const uint8_t* p = sheet.row(y) + 3 * x;
+      const bool red = p[0] > 100 && p[0] > p[1] + 60 && p[0] > p[2] + 60;
+      const bool blue = p[2] > 100 && p[2] > p[0] + 100;
+      n += red || blue ? 1 : 0;
+    }
+  return n;
+}
+
+/// Two results of each arm, copied into `dir` (a folder of compact results).
+void copy_two_per_arm(const std::string& dir) {
+  std::filesystem::create_directory(dir);
+  for (const char* name : {"feedforward-s1", "feedforward-s5", "recurrent-s2", "recurrent-s6"})
+    std::filesystem::copy_file(kM2Results + "/" + name + ".results.json", dir + "/" + name + ".results.json");
+}
+
+TEST(RenderResultsCli, ZooOfTheCommittedM2ResultsDrawsSixtyRobots) {
+  TempDir dir;
+  const robozoo::testing::Outcome o = render_cli("zoo " + kM2Results + " -o " + (dir / "zoo.png"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("60 robots reproduce their committed fitness"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("(60 robots)"), std::string::npos) << o.output;
+  const Image sheet = read_png(dir / "zoo.png");
+  // 60 cells of 360x270 in 11 columns (about sqrt(2 n)) and 6 rows, 12 px apart.
+  const int gap = 12, columns = 11, rows = 6;
+  EXPECT_EQ(sheet.width(), gap + columns * (360 + gap));
+  const int pitch = (sheet.height() - gap) / rows;
+  EXPECT_EQ(sheet.height(), gap + rows * pitch);
+  EXPECT_GT(pitch, 270 + gap);
+  for (int i = 0; i < 60; ++i)
+    EXPECT_GT(robot_pixels(sheet, gap + (i % columns) * (360 + gap), gap + (i / columns) * pitch, 360, 270), 1000)
+        << "tile " << i;
+  // The cells after the 60th are empty paper.
+  EXPECT_EQ(robot_pixels(sheet, gap + 5 * (360 + gap), gap + 5 * pitch, 360, 270), 0);
+}
+
+TEST(RenderResultsCli, ZooOfAFolderOfCompactResultsDrawsEveryTrialsBestRobot) {
+  TempDir dir;
+  copy_two_per_arm(dir / "results");
+  const robozoo::testing::Outcome o =
+      render_cli("zoo " + (dir / "results") + " --jobs 2 --cell 160x120 --columns 2 -o " + (dir / "zoo.png"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("4 robots reproduce their committed fitness"), std::string::npos) << o.output;
+  const Image sheet = read_png(dir / "zoo.png");
+  const int gap = 12;
+  EXPECT_EQ(sheet.width(), gap + 2 * (160 + gap));
+  ASSERT_GT(sheet.height(), gap + 2 * (120 + gap));
+  const int row = (sheet.height() - gap) / 2;
+  for (int i = 0; i < 4; ++i)
+    EXPECT_GT(robot_pixels(sheet, gap + (i % 2) * (160 + gap), gap + (i / 2) * row, 160, 120), 200) << "tile " << i;
+  // The same sheet on one thread.
+  const robozoo::testing::Outcome one =
+      render_cli("zoo " + (dir / "results") + " --jobs 1 -q --cell 160x120 --columns 2 -o " + (dir / "one.png"));
+  ASSERT_EQ(one.status, 0) << one.output;
+  EXPECT_EQ(read_file(dir / "one.png"), read_file(dir / "zoo.png"));
+  // Files as well as folders; not mixed with logs.
+  const robozoo::testing::Outcome files =
+      render_cli("zoo " + (dir / "results/recurrent-s2.results.json") + " -q --cell 160x120 -o " + (dir / "r2.png"));
+  ASSERT_EQ(files.status, 0) << files.output;
+  EXPECT_NE(files.output.find("1 robots"), std::string::npos) << files.output;
+  const robozoo::testing::Outcome mixed =
+      render_cli("zoo " + (dir / "results") + " " + (dir / "run.lcmlog") + " -o " + (dir / "m.png"));
+  EXPECT_EQ(mixed.status, 2) << mixed.output;
+  EXPECT_NE(mixed.output.find("not both"), std::string::npos) << mixed.output;
+  const robozoo::testing::Outcome top = render_cli("zoo " + (dir / "results") + " --top 2 -o " + (dir / "m.png"));
+  EXPECT_EQ(top.status, 2) << top.output;
+  EXPECT_FALSE(file_exists(dir / "m.png"));
+}
+
+TEST(RenderResultsCli, ARobotThatDoesNotReproduceIsRefusedByName) {
+  TempDir dir;
+  copy_two_per_arm(dir / "results");
+  // The genome of one trial altered: every CPPN weight negated.
+  const std::string edited = dir / "results/recurrent-s6.results.json";
+  nlohmann::json j = nlohmann::json::parse(read_file(edited));
+  for (auto& link : j["best"]["genome"]["links"]) link["weight"] = -link["weight"].get<double>();
+  std::ofstream(edited) << j.dump();
+  const robozoo::testing::Outcome o = render_cli("zoo " + (dir / "results") + " --jobs 2 -o " + (dir / "zoo.png"));
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("recurrent-s6.results.json: genome"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("with this build, the result says"), std::string::npos) << o.output;
+  EXPECT_FALSE(file_exists(dir / "zoo.png"));
+  const robozoo::testing::Outcome v = render_cli("video " + edited + " -q -o " + (dir / "v.mp4"));
+  EXPECT_EQ(v.status, 1) << v.output;
+  EXPECT_NE(v.output.find("recurrent-s6"), std::string::npos) << v.output;
+  EXPECT_FALSE(file_exists(dir / "v.mp4"));
+  // Not compact results at all.
+  const robozoo::testing::Outcome bad = render_cli("zoo " + (dir / "absent.results.json") + " -o " + (dir / "a.png"));
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("absent.results.json"), std::string::npos) << bad.output;
+}
+
+TEST(RenderResultsCli, VideoOfTheMedianRobotOfSeveralResults) {
+  TempDir dir;
+  copy_two_per_arm(dir / "results");
+  const robozoo::testing::Outcome o = render_cli(
+      "video " + (dir / "results/feedforward-s1.results.json") + " " + (dir / "results/feedforward-s5.results.json") +
+      " --pick median --size 160x120 --fps 5 --speed 25 --samples 0 -o " + (dir / "m.mp4"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("median of 2 best-of-run robots"), std::string::npos) << o.output;
+  const auto v = render::testing::decode_video(dir / "m.mp4");
+  ASSERT_TRUE(v.ok) << v.error;
+  EXPECT_EQ(v.width, 160);
+  EXPECT_EQ(v.luma.size(), 6u);  // 25 s at x25 and 5 fps, plus the first frame
+  const robozoo::testing::Outcome pick =
+      render_cli("video " + (dir / "results") + " --pick mean -o " + (dir / "x.mp4"));
+  EXPECT_NE(pick.status, 0);
+  const robozoo::testing::Outcome gen =
+      render_cli("video " + (dir / "results") + " --generation 3 -o " + (dir / "x.mp4"));
+  EXPECT_EQ(gen.status, 2) << gen.output;
+  EXPECT_FALSE(file_exists(dir / "x.mp4"));
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ make_tree() {
   printf '#include "evolve/run/run_results.hpp"\n#include "util/exit_status.hpp"\n#include "robozoo/run_t.hpp"\n#include <CLI/CLI.hpp>\n// #include "study/analysis/x.hpp" (a comment)\n' >evolve/app/champion_command.cpp
   printf '#include "evolve/io/event_log.hpp"\n' >runlog/read/log_reader.cpp
   printf '#include "runlog/read/log_reader.hpp"\n#include <evolve/run/run_summary.hpp>\n' >study/analysis/b.cpp
-  printf '#include "runlog/read/log_reader.hpp"\n' >render/c.hpp
+  printf '#include "runlog/read/log_reader.hpp"\n#include "study/analysis/b.hpp"\n' >render/c.hpp
   printf '#include "runlog/read/log_reader.hpp"\n' >replay/d.h
   printf '#include "study/analysis/b.hpp"\n#include "render/c.hpp"\n' >view/e.cpp
   printf '#include "study/analysis/b.hpp"\n' >tools/log/robozoo-log.cpp
@@ -49,7 +49,8 @@ expect_violation "evolve includes study" evolve/app/champion_command.cpp '#inclu
 expect_violation "evolve includes runlog" evolve/io/x.hpp '#include "runlog/robots/regrow.hpp"'
 expect_violation "evolve includes view (angle brackets)" evolve/io/y.cpp '  #  include <view/serve/server.hpp>'
 expect_violation "runlog includes study" runlog/read/log_reader.cpp '#include "study/analysis/b.hpp"'
-expect_violation "study includes its sibling render" study/analysis/b.cpp '#include "render/c.hpp"'
+expect_violation "study includes render, above it" study/analysis/b.cpp '#include "render/c.hpp"'
+expect_violation "render includes its sibling replay" render/c.cpp '#include "replay/d.h"'
 expect_violation "replay includes tools" replay/d.h '#include "tools/log/x.hpp"'
 expect_violation "view includes its sibling tools" view/e.cpp '#include "tools/log/x.hpp"'
 expect_violation "util includes evolve" util/a.cpp '#include "evolve/core/rng.hpp"'

@@ -6,11 +6,16 @@
 //    drawn (red and blue sphere pixels) and it plays its samples.
 //  - The experiment page of a small robozoo-experiment folder lists every
 //    trial, and shows the new generation when the experiment is extended by one.
+//  - The experiment page of the committed M2 results: a click on a trial's row
+//    (or its curve) shows its best-of-run robot moving under the chart, made
+//    again by the server from its compact result, the URL naming the trial;
+//    every chart's ticks are round numbers.
 // ROBOZOO_VIEW_SHOTS=DIR keeps the screenshots.
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -129,6 +134,121 @@ TEST(ViewShare, ExperimentPageShowsEveryTrialAndFollowsThem) {
   kill_process(view, SIGTERM);
   EXPECT_EQ(wait_status(view), 0) << read_file(dir / "view.txt");
   std::cout << "experiment page: 4 trials followed from 2 to 3 generations, " << coloured << " coloured pixels\n";
+}
+
+/// True when the labels are consecutive multiples of one step of 1, 2 or 5 times a power of ten.
+::testing::AssertionResult round_ticks(const nlohmann::json& labels) {
+  if (!labels.is_array() || labels.size() < 2) return ::testing::AssertionFailure() << "too few ticks: " << labels;
+  std::vector<double> v;
+  for (const auto& l : labels) v.push_back(std::stod(l.get<std::string>()));
+  const double step = v[1] - v[0];
+  const double p = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const double m = step / p;
+  if (std::abs(m - 1) > 1e-6 && std::abs(m - 2) > 1e-6 && std::abs(m - 5) > 1e-6)
+    return ::testing::AssertionFailure() << "step " << step << " is not 1, 2 or 5 x 10^k: " << labels;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const double k = v[i] / step;
+    if (std::abs(k - std::round(k)) > 1e-6) return ::testing::AssertionFailure() << v[i] << " is off the step " << step;
+    if (i > 0 && std::abs(v[i] - v[i - 1] - step) > 1e-6 * step)
+      return ::testing::AssertionFailure() << "uneven ticks: " << labels;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(ViewShare, ExperimentPageShowsATrialsBestOfRunRobotFromItsCompactResult) {
+  RUN_IN_PRIVATE_NETWORK(400, false);
+  TempDir dir;
+  const std::string m2 = std::string(ROBOZOO_SOURCE_DIR) + "/media/experiment/paper/m2";
+  const nlohmann::json result = nlohmann::json::parse(read_file(m2 + "/results/recurrent-s42.results.json"));
+  const int64_t best = result["best"]["genome"]["id"];
+  const pid_t view =
+      spawn({bin("robozoo-view"), "--experiment", m2, "--port", "8080", "--poll", "5"}, dir / "view.txt");
+  ASSERT_TRUE(wait_for([&] { return read_file(dir / "view.txt").find("open http") != std::string::npos; }, 20))
+      << read_file(dir / "view.txt");
+  HeadlessBrowser browser(dir / "profile", dir / "chromium.txt", 1280, 1000);
+  const std::string tab = browser.open("http://127.0.0.1:8080/experiment.html");
+  auto stats = [&] { return browser.evaluate(tab, "window.robozooExperiment ? robozooExperiment.stats() : null"); };
+  ASSERT_TRUE(wait_for(
+      [&] {
+        const nlohmann::json s = stats();
+        return !s.is_null() && s["rows"] == 60;
+      },
+      30))
+      << stats().dump() << read_file(dir / "view.txt");
+  // The thumbnail strips: each arm's 30 best-of-run robots, re-made by the server.
+  ASSERT_TRUE(wait_for([&] { return !stats()["zoo"].is_null(); }, 60)) << stats().dump();
+  EXPECT_EQ(stats()["zoo"],
+            nlohmann::json::parse(R"([{"arm":"feedforward","robots":30},{"arm":"recurrent","robots":30}])"));
+  keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 1000}}),
+           dir / "view-experiment-zoo.png");
+  // The curves' axes: round numbers.
+  const nlohmann::json s0 = stats();
+  EXPECT_TRUE(round_ticks(s0["ticks"]["y"])) << s0["ticks"];
+  EXPECT_TRUE(round_ticks(s0["ticks"]["x"])) << s0["ticks"];
+  EXPECT_EQ(s0["trial"], nullptr);
+
+  // A click on a trial's row: its robot, made again from its result, below the chart.
+  browser.evaluate(tab, "document.querySelector('#trials tr[data-name=\"recurrent-s42\"]').click()");
+  auto trial_view = [&] { return browser.evaluate(tab, "robozooExperiment.trialView()"); };
+  ASSERT_TRUE(wait_for(
+      [&] {
+        const nlohmann::json t = trial_view();
+        return !t.is_null() && t["stats"]["samples"] > 100 && t["stats"]["frames"] > 5;
+      },
+      90))
+      << trial_view().dump() << read_file(dir / "view.txt");
+  const nlohmann::json s1 = stats();
+  EXPECT_EQ(s1["trial"], "recurrent-s42");
+  EXPECT_EQ(s1["hash"], "#trial=recurrent-s42");
+  nlohmann::json t = trial_view();
+  EXPECT_EQ(t["stats"]["robot"], best) << t.dump();
+  EXPECT_EQ(t["stats"]["spheres"], 50) << t.dump();
+  EXPECT_EQ(t["stats"]["run"], "recurrent-s42");
+  EXPECT_EQ(t["status"], "offline file");
+  EXPECT_EQ(t["timeline"]["stateText"].get<std::string>().find("following live"), std::string::npos) << t.dump();
+  EXPECT_GE(t["timeline"]["start"].get<double>(), 0.0) << t.dump();
+  EXPECT_GE(t["timeline"]["playhead"].get<double>(), 0.0) << t.dump();
+  EXPECT_TRUE(round_ticks(t["chartTicks"]["fitness"])) << t["chartTicks"];
+  EXPECT_TRUE(round_ticks(t["chartTicks"]["species"])) << t["chartTicks"];
+  // It moves: two pictures of its 3D view a second apart differ.
+  const render::Image a = keep_png(browser.screenshot(tab, t["stage"]), dir / "view-trial-a.png");
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  t = trial_view();
+  const render::Image b = keep_png(browser.screenshot(tab, t["stage"]), dir / "view-trial-b.png");
+  const int changed = changed_pixels(a, b);
+  EXPECT_GT(changed, 100) << t.dump();
+  const render::testing::Pixels colours = render::testing::count_colours(b);
+  EXPECT_GT(colours.red, 30);
+  EXPECT_GT(colours.blue, 30);
+  keep_png(browser.screenshot(tab, {{"x", 0}, {"y", 0}, {"width", 1280}, {"height", 1000}}),
+           dir / "view-experiment-trial.png");
+
+  // A click on another trial's curve opens that one.
+  const nlohmann::json at = browser.evaluate(tab, "robozooExperiment.curvePoint('feedforward-s21', 45)");
+  ASSERT_FALSE(at.is_null());
+  for (const char* type : {"mousePressed", "mouseReleased"})
+    browser.call("Input.dispatchMouseEvent",
+                 {{"type", type}, {"x", at["x"]}, {"y", at["y"]}, {"button", "left"}, {"clickCount", 1}}, tab);
+  EXPECT_TRUE(wait_for([&] { return stats()["trial"] == "feedforward-s21"; }, 10)) << stats().dump();
+  EXPECT_EQ(stats()["hash"], "#trial=feedforward-s21");
+
+  // A click on a thumbnail opens its trial.
+  browser.evaluate(tab, "document.querySelector('#zoo canvas[data-name=\"recurrent-s6\"]').click()");
+  EXPECT_TRUE(wait_for([&] { return stats()["trial"] == "recurrent-s6"; }, 10)) << stats().dump();
+
+  // The link, shared: a new page on it opens that trial.
+  const std::string shared = browser.open("http://127.0.0.1:8080/experiment.html#trial=recurrent-s2");
+  EXPECT_TRUE(wait_for(
+      [&] {
+        const nlohmann::json v =
+            browser.evaluate(shared, "window.robozooExperiment ? robozooExperiment.trialView() : null");
+        return !v.is_null() && v["stats"]["run"] == "recurrent-s2" && v["stats"]["samples"] > 100;
+      },
+      90));
+  kill_process(view, SIGTERM);
+  EXPECT_EQ(wait_status(view), 0) << read_file(dir / "view.txt");
+  std::cout << "experiment page: recurrent-s42's best-of-run robot (genome " << best << ") re-made and moving, "
+            << changed << " pixels changed in 1.5 s\n";
 }
 
 }  // namespace

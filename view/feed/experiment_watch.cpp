@@ -17,12 +17,21 @@
 #include "robozoo/run_t.hpp"
 #include "runlog/read/log_reader.hpp"
 #include "evolve/run/run_results.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 
 namespace robozoo::view {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+/// Where the page says a trial comes from: "log", "result" or "checkpoint" (a portable checkpoint).
+std::string source_of(const TrialProgress& t) {
+  if (t.results_path.empty()) return "log";
+  const std::string ext = kPortableCheckpointExtension;
+  const std::string& p = t.results_path;
+  return p.size() >= ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0 ? "checkpoint" : "result";
+}
 
 /// The values of an arm's trials at generation g.
 std::vector<double> at_generation(const std::vector<TrialProgress>& trials, const std::string& arm, size_t g) {
@@ -152,7 +161,8 @@ bool ExperimentWatch::poll() {
 }
 
 bool ExperimentWatch::poll_results() {
-  static const std::regex name_re(R"(([a-z-]+)-s([0-9]{1,18})\.results\.json)");
+  // Compact results, and portable checkpoints (trials in progress: the result of their finished generations).
+  static const std::regex name_re(R"((([a-z-]+)-s[0-9]{1,18})\.(results\.json|portable-checkpoint))");
   // The result files, by trial; of two files of one trial, the one with more generations is shown.
   std::map<std::string, std::vector<fs::path>> files;
   for (const std::string& d : options_.results_dirs) {
@@ -162,11 +172,11 @@ bool ExperimentWatch::poll_results() {
       const std::string file = it->path().filename().string();
       if (!it->is_regular_file(ec) || !std::regex_match(file, m, name_re)) continue;
       try {
-        arm_from_name(m[1].str());
+        arm_from_name(m[2].str());
       } catch (const std::invalid_argument&) {
         continue;
       }
-      files[file.substr(0, file.size() - std::string(kRunResultsExtension).size())].push_back(it->path());
+      files[m[1].str()].push_back(it->path());
     }
   }
   bool changed = false;
@@ -191,7 +201,7 @@ bool ExperimentWatch::poll_results() {
     for (const fs::path& p : paths) {
       RunResults r;
       try {
-        r = read_run_results(p.string());
+        r = read_results_or_portable_checkpoint(p.string());
       } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(mutex_);
         changed |= unreadable_.emplace(p.string(), e.what()).second;
@@ -269,7 +279,7 @@ nlohmann::json ExperimentWatch::summary_json_locked() const {
                       {"planned", t.planned},
                       {"best", best},
                       {"checkpoint", t.checkpoint},
-                      {"source", t.results_path.empty() ? "log" : "result"},
+                      {"source", source_of(t)},
                       {"bsf", t.best_so_far}});
   }
   nlohmann::json arms = nlohmann::json::array();

@@ -10,7 +10,9 @@
 // run_results): the folders in `results_dirs` are polled too, and a trial
 // found there without a log in DIR is shown from its result, finished (a file
 // is read again only when its size or time changes; one that does not read is
-// listed, not shown). A trial with a log is shown from its log.
+// listed, not shown). A trial with a log is shown from its log. Portable
+// checkpoints there (<arm>-s<seed>.portable-checkpoint, a trial in progress
+// elsewhere) count as the compact result of their finished generations.
 //
 // What the page gets (summary_json): every trial's best-so-far fitness per
 // generation and its state; each arm's mean best-so-far per generation with

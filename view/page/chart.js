@@ -1,12 +1,15 @@
 // The fitness chart: best, mean and best-so-far fitness per generation (left
 // axis) and the species count (bars, right axis), one point per generation;
-// a cursor marks the generation of the robot shown.
+// a cursor marks the generation of the robot shown. Axis ticks at round numbers.
+import { ticks, tickLabel } from "/ticks.js";
+
 export class Chart {
   constructor(canvas) {
     this.canvas = canvas;
     this.gens = [];
     this.cursor = null;     // generation of the robot shown
     this.cursorX = null;    // where its cursor was drawn (CSS px), for tests
+    this.tickLabels = { fitness: [], species: [], generation: [] };  // the labels drawn, for tests
     window.addEventListener("resize", () => this.draw());
   }
 
@@ -32,6 +35,7 @@ export class Chart {
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, w, h);
     this.cursorX = null;
+    this.tickLabels = { fitness: [], species: [], generation: [] };
     const L = 44, R = 30, T = 6, B = 18;
     const gs = this.gens;
     ctx.font = "10px DejaVu Sans, sans-serif";
@@ -73,13 +77,30 @@ export class Chart {
     line("bsf", "#111", 2);
     ctx.lineWidth = 1;
     ctx.fillStyle = "#444";
+    const fy = ticks(lo, hi, Math.max(2, Math.floor((h - T - B) / 28)));
     ctx.textAlign = "right";
-    ctx.fillText(hi.toFixed(1), L - 3, T + 9);
-    ctx.fillText(lo.toFixed(1), L - 3, h - B);
+    for (const v of fy.values) {
+      const label = tickLabel(v, fy.step);
+      ctx.fillRect(L - 3, Y(v), 3, 1);
+      ctx.fillText(label, L - 4, Math.min(h - B, Math.max(T + 8, Y(v) + 3)));
+      this.tickLabels.fitness.push(label);
+    }
+    const sy = ticks(0, sp, Math.max(2, Math.floor((h - T - B) / 28)), true);
     ctx.textAlign = "left";
-    ctx.fillText(String(sp), w - R + 3, T + 9);
+    for (const v of sy.values) {
+      const label = tickLabel(v, sy.step);
+      ctx.fillRect(w - R, S(v), 3, 1);
+      ctx.fillText(label, w - R + 4, Math.min(h - B, Math.max(T + 8, S(v) + 3)));
+      this.tickLabels.species.push(label);
+    }
+    const gx = ticks(g0, g1, Math.max(2, Math.floor((w - L - R) / 60)), true);
     ctx.textAlign = "center";
-    ctx.fillText("gen " + g0, L + 14, h - 4);
-    ctx.fillText("gen " + gs[gs.length - 1].g, w - R - 14, h - 4);
+    for (const g of gx.values) {
+      const label = tickLabel(g, gx.step);
+      ctx.fillRect(X(g), h - B, 1, 3);
+      ctx.fillText(label, X(g), h - 5);
+      this.tickLabels.generation.push(label);
+    }
+    ctx.textAlign = "left";
   }
 }

@@ -101,7 +101,7 @@ export class Playback {
           }
         }
       } else {
-        this.simTime = Math.min(this.simTime + this.speed * dtMs / 1000, last);
+        this.simTime = Math.min(Math.max(this.simTime + this.speed * dtMs / 1000, s[0].time), last);
       }
     }
     while (this.index + 1 < s.length && s[this.index + 1].time <= this.simTime) this.index++;

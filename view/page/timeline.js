@@ -73,8 +73,11 @@ export class Timeline {
   }
 
   /// Brings the controls up to date (every frame: cheap when nothing changed).
-  /// following: the page shows the newest champion as it comes; live: the source is a live run.
-  update(following, live) {
+  /// following: the page shows the newest champion as it comes; source: the
+  /// hello frame's mode, "live" (a live run), "log" or "file" (one champion
+  /// saved as a file, or a trial's robot: nothing to follow).
+  update(following, source) {
+    const live = source !== "log" && source !== "file";
     const p = this.playback, e = this.el;
     const t0 = p.start(), t1 = p.end();
     const playing = p.playing;
@@ -95,9 +98,11 @@ export class Timeline {
     const i = this.champions.findIndex((c) => c.id === id);
     if (i >= 0 && document.activeElement !== e.gen && e.gen.value !== String(i)) { e.gen.value = String(i); }
     if (document.activeElement !== e.gen) this.showGenLabel(i >= 0 ? i : -1);
-    const where = live ? "live" : "the log";
+    const where = live ? "live" : source === "file" ? "the file" : "the log";
+    const file = source === "file";
     // The text's length never moves the panels: the bar is one line of fixed height.
-    const state = following ? `following ${where}` :
+    const state = following && file ? (p.robot ? `genome ${id}: ${playing ? "playing" : "paused"}` : "waiting for the champion") :
+                  following ? `following ${where}` :
                   !p.robot ? "waiting for the champion asked for" :
                   t0 === null ? `waiting for the samples of genome ${id}` :
                   playing ? `playing genome ${id} (not following ${where})` : `paused at ${num(p.simTime)} s of genome ${id}`;
@@ -105,7 +110,7 @@ export class Timeline {
       e.state.textContent = state;
       e.state.className = following ? "following" : "held";
     }
-    e.live.hidden = following;
-    e.live.textContent = `back to ${live ? "live" : "the log"}`;
+    e.live.hidden = following || file;
+    e.live.textContent = `back to ${where}`;
   }
 }

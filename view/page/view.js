@@ -235,7 +235,9 @@ function stripEnd() {
 
 let lastFrame = performance.now();
 function frame(now) {
-  const dt = Math.min(100, now - lastFrame);
+  // A frame's timestamp may be earlier than the performance.now() taken before it was asked for:
+  // never a negative step (the clock would start before the first sample).
+  const dt = Math.max(0, Math.min(100, now - lastFrame));
   lastFrame = now;
   const d = playback.advance(dt, now);
   // Paused, the camera sits on the robot (no spring): the picture holds still.
@@ -245,7 +247,7 @@ function frame(now) {
     state.stripDrawn = now;
     strip.draw(playback.samples, playback.simTime, stripEnd());
   }
-  timeline.update(state.following, !state.hello || state.hello.mode !== "log");
+  timeline.update(state.following, state.hello ? state.hello.mode : "live");
   writeMoment();
   state.frames++; state.fpsFrames++;
   if (now - state.fpsSince >= 1000) {
@@ -288,6 +290,8 @@ window.robozooView = {
   play: () => timeline.play(), pause: () => timeline.pause(), seek: (t) => timeline.seek(t),
   step: (n) => timeline.step(n), live: () => backToLive(),
   strip: () => strip.info,
+  /// The chart's tick labels (round numbers): {fitness, species, generation}.
+  chartTicks: () => chart.tickLabels,
   cppn: () => cppn.counts(),
   /// The box of an element of the page (CSS px), for screenshots.
   rect: (id) => { const r = $(id).getBoundingClientRect(); return { x: r.x, y: r.y, width: r.width, height: r.height }; },

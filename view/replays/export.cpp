@@ -171,25 +171,29 @@ nlohmann::json champion_frames(const ExportOptions& o) {
     }
     if (!genome) throw std::runtime_error(o.log + ": no champion with a morphology");
   }
+  return genome_frames(*run, *genome, o.log.substr(o.log.find_last_of('/') + 1), o.resimulate_every);
+}
+
+nlohmann::json genome_frames(const RunRecord& run, const GenomeRecord& genome, const std::string& source,
+                             int resimulate_every) {
   Trajectory t;
   try {
-    t = genome_trajectory(*run, *genome, false, o.resimulate_every);
+    t = genome_trajectory(run, genome, false, resimulate_every);
   } catch (const std::exception& e) {
-    throw std::runtime_error(o.log + ": genome " + std::to_string(genome->genome.genome_id) + ": " + e.what());
+    throw std::runtime_error(source + ": genome " + std::to_string(genome.genome.genome_id) + ": " + e.what());
   }
-  const Eigen::Vector3d target = run_target(run->run);
+  const Eigen::Vector3d target = run_target(run.run);
   const double target3[3] = {target.x(), target.y(), target.z()};
   nlohmann::json gens = nlohmann::json::array();
-  for (const generation_t& g : run->generations) gens.push_back(generation_json(g));
-  nlohmann::json champion = champion_json(genome->genome);
+  for (const generation_t& g : run.generations) gens.push_back(generation_json(g));
+  nlohmann::json champion = champion_json(genome.genome);
   champion.erase("t");
-  const std::string name = o.log.substr(o.log.find_last_of('/') + 1);
-  return nlohmann::json::array({hello_json("file", name),
-                                run_json(run->run, target3),
+  return nlohmann::json::array({hello_json("file", source),
+                                run_json(run.run, target3),
                                 {{"t", "history"}, {"gens", gens}},
                                 {{"t", "champions"}, {"list", nlohmann::json::array({champion})}},
-                                robot_json(genome->genome, genome->morphology, false, false),
-                                trajectory_json(genome->genome.genome_id, t)});
+                                robot_json(genome.genome, genome.morphology, false, false),
+                                trajectory_json(genome.genome.genome_id, t)});
 }
 
 std::string offline_page(const AssetDirs& dirs, const nlohmann::json& frames) {

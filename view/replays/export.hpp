@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "runlog/read/run_record.hpp"
 #include "view/serve/assets.hpp"
 
 namespace robozoo::view {
@@ -29,6 +30,13 @@ struct ExportOptions {
 /// std::runtime_error with one clear line for an unreadable or damaged log, a
 /// log without champions, or an unknown genome.
 nlohmann::json champion_frames(const ExportOptions& options);
+
+/// The same frames for `genome` of `run` (it must have a morphology), from
+/// wherever they came (a log, a compact result's replay); `source` names it
+/// in the hello frame. std::runtime_error naming `source` when its trajectory
+/// cannot be made.
+nlohmann::json genome_frames(const RunRecord& run, const GenomeRecord& genome, const std::string& source,
+                             int resimulate_every = 4);
 
 /// The self-contained page for `frames` (an array of frames). Throws
 /// std::runtime_error naming a page or three.js file it cannot read or inline.

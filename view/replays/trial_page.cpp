@@ -1,34 +1,16 @@
 #include "view/replays/trial_page.hpp"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <stdexcept>
 
-#include "evolve/run/champion_log.hpp"
 #include "evolve/run/run_results.hpp"
+#include "runlog/read/champion_record.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 #include "view/replays/export.hpp"
 
 namespace robozoo::view {
 
 namespace {
-
-/// A temporary folder holding a log named after the trial (the page shows its name), removed with its object.
-struct TemporaryLog {
-  std::string dir, path;
-  explicit TemporaryLog(const std::string& trial) {
-    std::string tmpl = (std::filesystem::temp_directory_path() / "robozoo-view-trial-XXXXXX").string();
-    if (::mkdtemp(tmpl.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder " + tmpl);
-    dir = tmpl;
-    path = dir + "/" + trial + "-best-of-run.lcmlog";
-  }
-  ~TemporaryLog() {
-    std::error_code ec;
-    std::filesystem::remove_all(dir, ec);
-  }
-  TemporaryLog(const TemporaryLog&) = delete;
-  TemporaryLog& operator=(const TemporaryLog&) = delete;
-};
 
 HttpReply not_found(const std::string& line) { return HttpReply{404, "text/plain; charset=utf-8", line + "\n", ""}; }
 
@@ -44,10 +26,11 @@ HttpReply trial_page(const ExperimentWatch& watch, const AssetDirs& dirs, const 
       return HttpReply{200, "text/html; charset=utf-8", offline_page(dirs, champion_frames(o)), ""};
     }
     if (result.empty()) return not_found("no trial " + name);
-    TemporaryLog champion(name);
-    write_champion_log(read_run_results(result), champion.path);
-    o.log = champion.path;
-    return HttpReply{200, "text/html; charset=utf-8", offline_page(dirs, champion_frames(o)), ""};
+    const RunResults r = read_results_or_portable_checkpoint(result);  // run.path, what a refusal names: the file
+    const RunRecord run = champion_run_record(replay_champion(r, true), result, &r.run);  // with its curves
+    const std::string source = std::filesystem::path(result).filename().string() + " (best of run, simulated again)";
+    return HttpReply{200, "text/html; charset=utf-8",
+                     offline_page(dirs, genome_frames(run, *run.genomes.front(), source)), ""};
   } catch (const std::exception& e) {
     return not_found(name + ": " + e.what());
   }

@@ -3,8 +3,8 @@
 // self-contained replay: the trial's newest champion from its log (a growing
 // log's complete events), or, for a trial known only from its compact result
 // (finished on another machine), its best-of-run robot grown, evaluated and
-// simulated again by this build (evolve/run/champion_log's write_champion_log, through a
-// temporary log that is removed afterwards). When this build does not give the
+// simulated again by this build in memory (evolve/run/champion_log's replay_champion, the code
+// robozoo-evolve champion writes its logs with). When this build does not give the
 // committed fitness, r, d or outcome, the answer says so and shows nothing.
 #include <string>
 

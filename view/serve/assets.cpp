@@ -30,6 +30,7 @@ constexpr Entry kEntries[] = {
     {"/timeline.js", false, "timeline.js", "text/javascript; charset=utf-8"},
     {"/cppn.js", false, "cppn.js", "text/javascript; charset=utf-8"},
     {"/offline.js", false, "offline.js", "text/javascript; charset=utf-8"},
+    {"/ticks.js", false, "ticks.js", "text/javascript; charset=utf-8"},
     {"/experiment.html", false, "experiment.html", "text/html; charset=utf-8"},
     {"/experiment.js", false, "experiment.js", "text/javascript; charset=utf-8"},
     // OrbitControls imports "../../../build/three.module.js": the same layout as the install.

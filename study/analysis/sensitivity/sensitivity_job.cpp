@@ -6,7 +6,7 @@
 
 #include "evolve/run/checkpoint.hpp"
 #include "study/analysis/figures/csv_writer.hpp"
-#include "study/analysis/read/run_results.hpp"
+#include "evolve/run/run_results.hpp"
 #include "study/analysis/sensitivity/sensitivity_report.hpp"
 #include "study/analysis/stats_job.hpp"
 #include "util/shell_word.hpp"

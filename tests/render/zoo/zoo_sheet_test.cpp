@@ -124,6 +124,38 @@ TEST(ZooSheet, SheetSizeGridCaptionsAndPng) {
   EXPECT_EQ(empty[0] + empty[1] + empty[2], 0);
 }
 
+TEST(ZooSheet, SameScaleGivesASmallRobotAMagnifiedInset) {
+  // The known robot and a copy ten times as large, at one scale: the small one
+  // gets an inset in its cell's top-right third; the large one does not.
+  RobotCard small = known_card(), large = known_card();
+  for (double& r : large.shape.radius) r *= 10;
+  for (Eigen::Vector3d& c : large.shape.start) c *= 10;
+  ZooOptions o;
+  o.cell_width = 240;
+  o.cell_height = 180;
+  o.columns = 2;
+  o.gap = 10;
+  o.same_scale = true;
+  const Image sheet = render_zoo({large, small}, o);
+  auto corner = [&](int col) {
+    int robot = 0;
+    const int x0 = 10 + col * 250 + 240 * 2 / 3, y0 = 10;
+    for (int y = y0; y < y0 + 180 / 3; ++y)
+      for (int x = x0; x < x0 + 240 / 3; ++x) {
+        const Rgb c = sheet.at(x, y);
+        robot += testing::is_red(c.r, c.g, c.b) || testing::is_blue(c.r, c.g, c.b);
+      }
+    return robot;
+  };
+  EXPECT_EQ(corner(0), 0);
+  EXPECT_GT(corner(1), 50);
+  o.inset_below = 0;  // no insets
+  const Image bare = render_zoo({large, small}, o);
+  EXPECT_NE(bare.bytes(), sheet.bytes());
+  o.inset_below = 1.5;
+  EXPECT_THROW(validate(o), std::invalid_argument);
+}
+
 TEST(ZooSheet, BadOptions) {
   ZooOptions o;
   EXPECT_THROW(render_zoo({}, o), std::invalid_argument);

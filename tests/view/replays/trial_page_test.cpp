@@ -9,8 +9,11 @@
 
 #include <filesystem>
 
+#include "evolve/run/evaluator.hpp"
+#include "evolve/run/evolution.hpp"
 #include "evolve/run/run_results.hpp"
 #include "study/analysis/read/log_results.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
@@ -60,8 +63,9 @@ TEST(TrialPage, ATrialKnownFromItsResultShowsItsBestOfRunRobotMadeAgain) {
         champion = true;
       }
   EXPECT_TRUE(champion) << frames.dump().substr(0, 600);
-  // The page names the trial's re-made log; no temporary folder is left behind.
-  EXPECT_NE(frames[0].dump().find("recurrent-s7-best-of-run.lcmlog"), std::string::npos) << frames[0];
+  // The page names the trial's result; it was made in memory (no temporary folder, no log).
+  EXPECT_NE(frames[0].dump().find("recurrent-s7.results.json (best of run, simulated again)"), std::string::npos)
+      << frames[0];
   for (const auto& e : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
     EXPECT_EQ(e.path().filename().string().rfind("robozoo-view-trial-", 0), std::string::npos) << e.path();
 
@@ -79,6 +83,47 @@ TEST(TrialPage, ATrialKnownFromItsResultShowsItsBestOfRunRobotMadeAgain) {
   const HttpReply unknown = trial_page(watch, source_dirs(), "recurrent-s99");
   EXPECT_EQ(unknown.status, 404);
   EXPECT_EQ(unknown.body, "no trial recurrent-s99\n");
+}
+
+TEST(TrialPage, ATrialInProgressKnownFromItsPortableCheckpointShowsItsChampionSoFar) {
+  // A small run stopped after 2 of 4 generations, packed as robozoo-experiment --save-checkpoints does.
+  TempDir runs, logs, checkpoints;
+  RunConfig c = robozoo::testing::small_run_config(4);
+  c.seed = 3;
+  InProcessEvaluator evaluator(c.eval);
+  EvolveOptions eo;
+  eo.log_path = runs / "recurrent-s3.lcmlog";
+  eo.run_id = "recurrent-s3";
+  {
+    Evolution evo(c, eo, evaluator);
+    evo.step();
+    evo.step();
+  }
+  const PortableCheckpoint packed = pack_portable_checkpoint(runs / "recurrent-s3.lcmlog");
+  write_portable_checkpoint(checkpoints / "recurrent-s3.portable-checkpoint", packed);
+  ExperimentWatchOptions o;
+  o.results_dirs = {checkpoints.path};
+  const ExperimentWatch watch(logs.path, o);
+  const nlohmann::json summary = nlohmann::json::parse(watch.summary());
+  ASSERT_EQ(summary["trials"].size(), 1u) << summary.dump();
+  EXPECT_EQ(summary["trials"][0]["name"], "recurrent-s3");
+  EXPECT_EQ(summary["trials"][0]["source"], "checkpoint");
+  EXPECT_EQ(summary["trials"][0]["generations"], 2);
+  const HttpReply page = trial_page(watch, source_dirs(), "recurrent-s3");
+  ASSERT_EQ(page.status, 200) << page.body.substr(0, 300);
+  const nlohmann::json frames = inline_data(page.body);
+  const ChampionRecord* best = best_of_run(packed.earlier.run);
+  ASSERT_NE(best, nullptr);
+  bool champion = false;
+  for (const auto& f : frames)
+    if (f.value("t", "") == "champions")
+      for (const auto& ch : f["list"]) {
+        EXPECT_EQ(ch["id"].get<int64_t>(), best->genome.genome_id) << ch;
+        EXPECT_EQ(ch["fitness"].get<double>(), best->genome.fitness) << ch;
+        champion = true;
+      }
+  EXPECT_TRUE(champion);
+  EXPECT_NE(frames[0].dump().find("recurrent-s3.portable-checkpoint"), std::string::npos) << frames[0];
 }
 
 }  // namespace

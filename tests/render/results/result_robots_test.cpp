@@ -1,0 +1,148 @@
+// Robots from compact results: the committed paper-size results (M2) give
+// their best-of-run robots again, the same on any number of threads, in
+// Figure 4's order and with its captions.
+#include "render/results/result_robots.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "evolve/messages/build.hpp"
+#include "evolve/run/evaluator.hpp"
+#include "evolve/run/evolution.hpp"
+#include "study/experiment/portable_checkpoint.hpp"
+#include "tests/support/small_run.hpp"
+#include "tests/support/subprocess.hpp"
+
+namespace robozoo::render {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace robozoo::testing;
+
+const std::string kM2 = std::string(ROBOZOO_SOURCE_DIR) + "/media/experiment/paper/m2/results";
+
+TEST(ResultRobots, AFolderGivesItsResultsInSeedOrder) {
+  const std::vector<std::string> files = results_files({kM2});
+  ASSERT_EQ(files.size(), 60u);
+  EXPECT_EQ(fs::path(files[0]).filename(), "feedforward-s1.results.json");
+  EXPECT_EQ(fs::path(files[1]).filename(), "feedforward-s5.results.json");  // seeds as numbers
+  EXPECT_TRUE(is_results_path(kM2));
+  EXPECT_TRUE(is_results_path(files[0]));
+  EXPECT_FALSE(is_results_path("run.lcmlog"));
+  EXPECT_THROW(results_files({"run.lcmlog"}), std::invalid_argument);
+  TempDir empty;
+  EXPECT_THROW(results_files({empty.path}), std::invalid_argument);
+}
+
+TEST(ResultRobots, TheSameRobotsOnOneThreadAndOnTwo) {
+  const std::vector<RunResults> results =
+      read_results({kM2 + "/feedforward-s1.results.json", kM2 + "/recurrent-s2.results.json"});
+  size_t calls = 0, last = 0;
+  const std::vector<ResultRobot> one = result_robots(results, true, 1);
+  const std::vector<ResultRobot> two = result_robots(results, true, 2, [&](size_t done, size_t total) {
+    ++calls;
+    last = done;
+    EXPECT_EQ(total, 2u);
+  });
+  EXPECT_GE(calls, 1u);
+  EXPECT_EQ(last, 2u);
+  ASSERT_EQ(one.size(), 2u);
+  ASSERT_EQ(two.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    const GenomeRecord &a = one[i].champion(), &b = two[i].champion();
+    EXPECT_EQ(one[i].run_id, results[i].run.run_id);
+    EXPECT_EQ(a.genome.fitness, best_of_run(results[i].run)->genome.fitness);
+    EXPECT_EQ(a.genome.generation, best_of_run(results[i].run)->generation);
+    EXPECT_TRUE(a.champion);
+    EXPECT_EQ(a.stream, GenomeRecord::Stream::Complete);
+    ASSERT_GT(a.poses.size(), 100u);
+    ASSERT_EQ(a.poses.size(), b.poses.size());
+    morphology_t ma = a.morphology, mb = b.morphology;
+    ma.utime = mb.utime = 0;
+    EXPECT_EQ(encode_message(ma), encode_message(mb));
+    for (size_t k = 0; k < a.poses.size(); ++k) {
+      pose_t pa = a.poses[k], pb = b.poses[k];
+      pa.utime = pb.utime = 0;
+      ASSERT_EQ(encode_message(pa), encode_message(pb)) << "pose " << k;
+    }
+  }
+  // Without poses: the same robot, no stream (a zoo sheet needs none).
+  const std::vector<ResultRobot> bare = result_robots(results, false, 2);
+  EXPECT_TRUE(bare[0].champion().poses.empty());
+  EXPECT_EQ(bare[0].champion().morphology.spheres.size(), one[0].champion().morphology.spheres.size());
+}
+
+TEST(ResultRobots, CaptionsNameArmSeedFitnessSpheresAndJoints) {
+  const std::vector<RunResults> results = read_results({kM2 + "/recurrent-s2.results.json"});
+  const std::vector<ResultRobot> robots = result_robots(results, false, 1);
+  const RobotCard card = result_card(robots[0]);
+  ASSERT_EQ(card.caption.size(), 2u);
+  EXPECT_EQ(card.caption[0], "recurrent \u00b7 seed 2");
+  const morphology_t& m = robots[0].champion().morphology;
+  char expect[200];
+  std::snprintf(expect, sizeof expect, "fitness %.2f \u00b7 %d sphere%s \u00b7 %d joint%s", card.fitness,
+                sphere_count(m), sphere_count(m) == 1 ? "" : "s", joint_count(m), joint_count(m) == 1 ? "" : "s");
+  EXPECT_EQ(card.caption[1], expect);
+  EXPECT_EQ(card_caption(card), card.caption);
+  EXPECT_LE(joint_count(m), sphere_count(m) - 1);
+}
+
+TEST(ResultRobots, FigureOrderIsByArmThenFitnessAndPicksRankByFitness) {
+  const std::vector<RunResults> results = read_results(results_files({kM2}));
+  const std::vector<size_t> order = figure_order(results);
+  ASSERT_EQ(order.size(), results.size());
+  for (size_t i = 1; i < order.size(); ++i) {
+    const RunResults &a = results[order[i - 1]], &b = results[order[i]];
+    if (a.run.arm == b.run.arm)
+      EXPECT_GE(best_of_run(a.run)->genome.fitness, best_of_run(b.run)->genome.fitness) << i;
+    else
+      EXPECT_EQ(a.run.arm, "feedforward");
+  }
+  std::vector<RunResults> ff;
+  for (const RunResults& r : results)
+    if (r.run.arm == "feedforward") ff.push_back(r);
+  ASSERT_EQ(ff.size(), 30u);
+  std::vector<double> f;
+  for (const RunResults& r : ff) f.push_back(best_of_run(r.run)->genome.fitness);
+  std::sort(f.rbegin(), f.rend());
+  EXPECT_EQ(best_of_run(ff[pick_result(ff, "best")].run)->genome.fitness, f.front());
+  EXPECT_EQ(best_of_run(ff[pick_result(ff, "median")].run)->genome.fitness, f[14]);  // rank 15 of 30
+  EXPECT_EQ(best_of_run(ff[pick_result(ff, "worst")].run)->genome.fitness, f.back());
+  EXPECT_THROW(pick_result(ff, "mean"), std::invalid_argument);
+}
+
+TEST(ResultRobots, ATrialInProgressShowsItsChampionSoFarFromItsPortableCheckpoint) {
+  // A small run stopped after 2 of 4 generations, packed as robozoo-experiment --save-checkpoints does.
+  TempDir dir;
+  const std::string log = dir / "recurrent-s3.lcmlog";
+  RunConfig c = robozoo::testing::small_run_config(4);
+  c.seed = 3;
+  InProcessEvaluator evaluator(c.eval);
+  EvolveOptions o;
+  o.log_path = log;
+  o.run_id = "recurrent-s3";
+  {
+    Evolution evo(c, o, evaluator);
+    evo.step();
+    evo.step();
+  }
+  fs::create_directory(dir / "checkpoints");
+  const std::string file = dir / "checkpoints/recurrent-s3.portable-checkpoint";
+  write_portable_checkpoint(file, pack_portable_checkpoint(log));
+  EXPECT_TRUE(is_results_path(file));
+  ASSERT_EQ(results_files({dir / "checkpoints"}), std::vector<std::string>{file});
+  const std::vector<RunResults> results = read_results({file});
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].run.path, file);
+  const std::vector<ResultRobot> robots = result_robots(results, true, 1);
+  EXPECT_EQ(robots[0].generations, 2);
+  EXPECT_EQ(robots[0].planned, 4);
+  EXPECT_EQ(robots[0].champion().genome.fitness, best_of_run(results[0].run)->genome.fitness);
+  const RobotCard card = result_card(robots[0]);
+  ASSERT_EQ(card.caption.size(), 2u);
+  EXPECT_NE(card.caption[0].find("seed 3 \u00b7 2 of 4 generations"), std::string::npos) << card.caption[0];
+}
+
+}  // namespace
+}  // namespace robozoo::render
