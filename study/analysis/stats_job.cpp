@@ -121,7 +121,7 @@ void write_text(const std::string& path, const std::string& text) {
 struct RunsRead {
   std::vector<RunAnalysis> runs;
   bool from_results = false;                                     ///< compact results, not logs
-  std::map<std::string, std::vector<std::string>> per_arm_logs;  ///< logs by arm (none from results)
+  std::map<std::string, std::vector<std::string>> per_arm_logs;  ///< logs (or compact results) by arm
   std::set<std::tuple<int32_t, int32_t, int32_t>> sizes;         ///< population, generations, steps
   double evolve_seconds = 0;                                     ///< robozoo-evolve's wall time (s)
   int with_checkpoint = 0;                                       ///< runs that know it (count)
@@ -163,7 +163,7 @@ RunsRead read_runs(const StatsOptions& o, std::vector<std::string>& skipped, std
     progress << "  " << name << ": " << arm_title(a.arm) << " seed " << a.seed << ", " << a.best_so_far.size()
              << " generations, best " << (a.best_so_far.empty() ? 0.0 : a.best_so_far.back()) << "\n";
     r.sizes.insert({a.population, a.generations_requested, a.steps});
-    if (!from_results) r.per_arm_logs[a.arm].push_back(path);
+    r.per_arm_logs[a.arm].push_back(path);
     if (results.has_evolve_seconds) {
       r.evolve_seconds += results.evolve_seconds;
       ++r.with_checkpoint;
@@ -321,10 +321,6 @@ void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out
     const std::vector<std::string> regime_logs = it == r.per_arm_logs.end() ? std::vector<std::string>{} : it->second;
     if (!o.zoo) {
       z.note = "not made (--no-zoo)";
-    } else if (from_results) {
-      z.note =
-          "not made: the folder holds compact results, and robozoo-render draws robots from logs "
-          "(robozoo-evolve champion RESULT --log OUT writes one)";
     } else if (regime_logs.empty()) {
       z.note = "no run";
     } else if (!is_executable(render)) {
@@ -337,13 +333,22 @@ void make_zoo_sheets(const StatsOptions& o, const RunsRead& r, StatsOutcome& out
       const std::string png = "zoo-" + arm + ".png";
       std::vector<std::string> argv = {render, "zoo"};
       argv.insert(argv.end(), regime_logs.begin(), regime_logs.end());
-      argv.insert(argv.end(), {"-o", (fs::path(out.out_dir) / png).string(), "--best-of-run"});
+      argv.insert(argv.end(), {"-o", (fs::path(out.out_dir) / png).string()});
+      // Compact results hold only the best-of-run robot, grown and simulated again and checked
+      // against its committed fitness; drawn at one scale and without the ground's grid (whose
+      // texture triples a committed sheet's size).
+      if (from_results)
+        argv.insert(argv.end(), {"--same-scale", "--no-grid", "--quiet"});
+      else
+        argv.push_back("--best-of-run");
       progress << "  rendering the " << z.regime << " zoo sheet\n";
       const ProgramResult res = run_program(argv);
       if (res.status == 0 && fs::exists(fs::path(out.out_dir) / png)) {
         z.file = png;
-        z.note = "best-of-run robots of the " + std::to_string(regime_logs.size()) + " runs (robozoo-render zoo " +
-                 "... --best-of-run)";
+        z.note =
+            "best-of-run robots of the " + std::to_string(regime_logs.size()) + " runs (robozoo-render zoo " +
+            (from_results ? "RESULTS... --same-scale --no-grid: each re-grown and re-simulated, its fitness checked)"
+                          : "... --best-of-run)");
         out.files.push_back(png);
       } else {
         z.note = "robozoo-render failed (exit status " + std::to_string(res.status) + "): " + res.output.substr(0, 300);

@@ -1,8 +1,9 @@
 // robozoo-stats from compact results: a small real experiment's logs give
 // report A; the compact results robozoo-experiment left give report B; every
-// file of A and B is the same byte for byte (the zoo sheets, which need logs,
-// left out of both with --no-zoo). robozoo-stats --export-results writes the
-// same compact results from the logs as robozoo-experiment did.
+// file of A and B is the same byte for byte (the zoo sheets, drawn from logs in
+// one and re-simulated from results in the other, left out of both with
+// --no-zoo). robozoo-stats --export-results writes the same compact results
+// from the logs as robozoo-experiment did.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,11 +63,18 @@ TEST(StatsResultsCli, CompactResultsGiveTheReportOfTheLogsByteForByte) {
       std::string::npos)
       << read_file(B + "/report.md");
 
-  // With zoo sheets asked for, a folder of compact results says why there is none.
+  // With zoo sheets asked for, a folder of compact results gets them too: each arm's best-of-run
+  // robots re-grown and re-simulated from the results (robozoo-render zoo checks their fitness).
   const auto zoo = run_shell("cd '" + results_home.path + "' && " + bin("robozoo-stats") + " exp --no-plots --out '" +
                              (reports / "C") + "'");
   ASSERT_EQ(zoo.status, 0) << zoo.output;
-  EXPECT_NE(read_file(reports / "C/report.md").find("the folder holds compact results"), std::string::npos);
+  const std::string with_zoo = read_file(reports / "C/report.md");
+  EXPECT_NE(with_zoo.find("best-of-run robots of the 2 runs (robozoo-render zoo RESULTS..."), std::string::npos)
+      << with_zoo;
+  for (const char* png : {"zoo-feedforward.png", "zoo-recurrent.png"}) {
+    EXPECT_GT(fs::file_size(reports / (std::string("C/") + png)), 10000u) << png;
+    EXPECT_NE(with_zoo.find(std::string("](") + png + ")"), std::string::npos) << png;
+  }
 
   // --export-results: the same files robozoo-experiment wrote.
   const auto ex = run_shell(bin("robozoo-stats") + " '" + exp + "' --export-results '" + (reports / "R") + "'");
