@@ -227,10 +227,11 @@ std::vector<ChampionReplay> replay_champions(const std::vector<RunResults>& resu
         int status = 0;
         const pid_t got = ::waitpid(it->first, &status, WNOHANG);
         if (got == 0) continue;
+        const pid_t pid = it->first;
         const size_t i = it->second;
-        running.erase(it);
+        running.erase(it);  // `it` is gone from here on
         const std::string file = dir.path + "/" + std::to_string(i);
-        if (got == it->first && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        if (got == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
           try {
             out[i] = replay_from_bytes(read_all(file));
           } catch (const std::exception& e) {
