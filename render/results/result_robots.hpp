@@ -3,7 +3,7 @@
 // trials in progress of its portable checkpoints, *.portable-checkpoint, whose
 // compact result of the finished generations gives the champion so far): each
 // result's best-of-run champion grown and simulated again by this build in
-// memory (study's replay_champion: no log is written), its fitness checked
+// memory (evolve/run/champion_log's replay_champion: no log is written), its fitness checked
 // against the committed one, as the run record that zoo sheets and videos draw
 // from a log.
 #include <cstdint>
