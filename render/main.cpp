@@ -1,9 +1,10 @@
 // robozoo-render: draws what evolution produced, headless (OSMesa/llvmpipe):
 //   zoo    a PNG sheet of robots in their starting pose (the paper's Figure 4)
 //   video  an H.264 MP4 of a champion moving
-// zoo and video draw from logs or from compact results (*.results.json), whose
-// best-of-run robots are grown and simulated again in memory, their fitness
-// checked against the committed one first.
+// zoo and video draw from logs or from compact results (*.results.json, or a
+// running experiment's folder of logs), whose best-of-run robots are grown and
+// simulated again in memory, their fitness checked against the committed one
+// first.
 //   live   latest.png and one video per new champion, from an LCM bus
 //   bench  frames per second of drawing and encoding
 #include <signal.h>
@@ -114,6 +115,16 @@ bool inputs_are_results(const std::vector<std::string>& inputs) {
   return results > 0;
 }
 
+/// The compact results that `inputs` name, those that cannot be drawn yet (a
+/// running trial's log before its first generation) left out with a note.
+std::vector<RunResults> read_drawable_results(const std::vector<std::string>& inputs) {
+  std::vector<std::string> left_out;
+  std::vector<RunResults> all = read_results(results_files(inputs), &left_out);
+  for (const std::string& why : left_out) std::cerr << "robozoo-render: left out " << why << "\n";
+  if (all.empty()) throw std::runtime_error("no trial has a champion yet: nothing to draw");
+  return all;
+}
+
 /// The best-of-run robots of compact results, re-grown and re-simulated in
 /// memory, with a progress bar on a terminal and a line before and after.
 std::vector<ResultRobot> replay_results(const std::vector<RunResults>& results, bool poses, int jobs, bool quiet) {
@@ -161,7 +172,7 @@ int run_results_zoo(const ZooArgs& a) {
     throw std::invalid_argument(
         "compact results hold one robot per trial, their best of run: no --top or --generation");
   if (a.allow_truncated) throw std::invalid_argument("--allow-truncated is for logs, not compact results");
-  const std::vector<RunResults> all = read_results(results_files(a.logs));
+  const std::vector<RunResults> all = read_drawable_results(a.logs);
   std::vector<RunResults> ordered;
   for (size_t i : figure_order(all)) ordered.push_back(all[i]);
   const std::vector<ResultRobot> robots = replay_results(ordered, false, a.jobs, a.quiet);
@@ -230,7 +241,7 @@ VideoSubject results_video_subject(const VideoCmdArgs& a) {
     throw std::invalid_argument(
         "compact results hold one robot per trial, re-simulated anyway: no --genome, --generation, --resimulate or "
         "--allow-truncated (choose among several with --pick)");
-  const std::vector<RunResults> all = read_results(results_files(a.inputs));
+  const std::vector<RunResults> all = read_drawable_results(a.inputs);
   const RunResults& chosen = all[pick_result(all, a.pick.empty() ? "best" : a.pick)];
   if (!a.quiet && all.size() > 1)
     std::cerr << "robozoo-render: " << (a.pick.empty() ? "best" : a.pick) << " of " << all.size()
@@ -344,7 +355,8 @@ int main(int argc, char** argv) {
   zc->add_option("inputs", zoo.logs,
                  "robozoo-evolve logs, or compact results: *.results.json files, *.portable-checkpoint files (a "
                  "trial in progress: its champion so far) or folders of them (each trial's best-of-run robot, grown "
-                 "and simulated again, its fitness checked; ordered by arm and fitness)")
+                 "and simulated again, its fitness checked; ordered by arm and fitness); a folder of logs alone (a "
+                 "running experiment's) is drawn the same way, each log read as its trial's result so far")
       ->required();
   zc->add_option("-o,--output", zoo.out, "PNG to write")->capture_default_str();
   zc->add_flag("--best-of-run", zoo.best_of_run, "the best champion of each run (default with several logs)");
@@ -377,8 +389,8 @@ int main(int argc, char** argv) {
       "video", "H.264 MP4 of a champion moving (from its logged poses, or re-simulated from a compact result)");
   vc->add_option("input", video.inputs,
                  "a robozoo-evolve log, or compact results: *.results.json files, *.portable-checkpoint files or "
-                 "folders of them (the --pick trial's best-of-run robot, grown and simulated again, its fitness "
-                 "checked)")
+                 "folders of them, or a running experiment's folder of logs (the --pick trial's best-of-run robot, "
+                 "grown and simulated again, its fitness checked)")
       ->required();
   vc->add_option("--pick", video.pick,
                  "compact results: whose robot, by committed best-of-run fitness: best, median (rank ceil(n/2) of n, "

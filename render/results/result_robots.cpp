@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "runlog/read/champion_record.hpp"
+#include "study/analysis/read/log_results.hpp"
 #include "study/analysis/stats_job.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 
@@ -15,6 +16,8 @@ namespace robozoo::render {
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr const char* kLogExtension = ".lcmlog";
 
 bool ends_with(const std::string& s, const std::string& end) {
   return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
@@ -40,9 +43,13 @@ std::vector<std::string> results_files(const std::vector<std::string>& paths) {
       for (const auto& e : fs::directory_iterator(p))
         if (e.is_regular_file() && ends_with(e.path().filename().string(), kPortableCheckpointExtension))
           in.push_back(e.path().string());
+      // A running experiment's folder of logs: each log read as its trial's
+      // compact result so far.
+      if (in.empty()) in = list_logs(p);
       if (in.empty())
         throw std::invalid_argument(p + ": no compact results (*" + kRunResultsExtension +
-                                    ") nor portable checkpoints (*" + kPortableCheckpointExtension + ") in it");
+                                    "), portable checkpoints (*" + kPortableCheckpointExtension +
+                                    ") nor logs (*.lcmlog) in it");
       std::sort(in.begin(), in.end(), natural_less);
       out.insert(out.end(), in.begin(), in.end());
     } else if (ends_with(p, kRunResultsExtension) || ends_with(p, kPortableCheckpointExtension)) {
@@ -56,10 +63,30 @@ std::vector<std::string> results_files(const std::vector<std::string>& paths) {
   return out;
 }
 
-std::vector<RunResults> read_results(const std::vector<std::string>& files) {
+std::vector<RunResults> read_results(const std::vector<std::string>& files, std::vector<std::string>* left_out) {
   std::vector<RunResults> out;
   out.reserve(files.size());
-  for (const std::string& f : files) out.push_back(read_results_or_portable_checkpoint(f));
+  for (const std::string& f : files) {
+    if (!ends_with(f, kLogExtension)) {
+      out.push_back(read_results_or_portable_checkpoint(f));
+    } else if (!left_out) {
+      out.push_back(results_from_log(f));
+    } else {
+      // A trial's log while it runs: empty until its first generation is
+      // evaluated, and perhaps unreadable for another reason, said with it.
+      try {
+        out.push_back(results_from_log(f));
+      } catch (const std::exception& e) {
+        left_out->push_back(f + ": " + e.what());
+        continue;
+      }
+    }
+    out.back().run.path = f;
+    if (left_out && !best_of_run(out.back().run)) {
+      left_out->push_back(f + ": no finished generation yet");
+      out.pop_back();
+    }
+  }
   return out;
 }
 

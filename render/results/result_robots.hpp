@@ -22,15 +22,21 @@ namespace robozoo::render {
 bool is_results_path(const std::string& path);
 
 /// The compact result files that `paths` name: files as given, folders' own
-/// *.results.json and *.portable-checkpoint in name order (seeds as numbers). Throws
-/// std::invalid_argument for a path that is neither, or for a folder without one.
+/// *.results.json and *.portable-checkpoint in name order (seeds as numbers);
+/// a folder with neither gives its logs (*.lcmlog: a running experiment's
+/// folder of trials). Throws std::invalid_argument for a path that is none of
+/// these, or for a folder without one.
 std::vector<std::string> results_files(const std::vector<std::string>& paths);
 
-/// Reads every file, a portable checkpoint as the compact result it carries
-/// (std::invalid_argument or std::runtime_error naming the
-/// first one that cannot be read); each result's run.path is its file, so that
-/// a replay's errors name it.
-std::vector<RunResults> read_results(const std::vector<std::string>& files);
+/// Reads every file, a portable checkpoint as the compact result it carries and
+/// a log as its compact result so far; each result's run.path is its file, so
+/// that a replay's errors name it. Throws std::invalid_argument or
+/// std::runtime_error naming the first file that cannot be read, except with
+/// `left_out`: then a log that cannot be read (a trial's log is empty until its
+/// first generation is evaluated) and a result without a champion are left
+/// out, each added to `left_out` as "file: why".
+std::vector<RunResults> read_results(const std::vector<std::string>& files,
+                                     std::vector<std::string>* left_out = nullptr);
 
 /// One result's best-of-run robot, grown and simulated again.
 struct ResultRobot {

@@ -154,6 +154,31 @@ TEST_F(RenderCli, TruncatedLog) {
   EXPECT_EQ(ok.status, 0) << ok.output;
 }
 
+TEST_F(RenderCli, ZooOfARunningExperimentsFolderOfLogs) {
+  // Its runs folder: two trials' logs, the second one ending mid-event, and a
+  // trial just started, whose log is still empty.
+  const std::string runs = path("runs");
+  std::filesystem::create_directory(runs);
+  std::filesystem::copy_file(path("run.lcmlog"), runs + "/recurrent-s7.lcmlog");
+  std::filesystem::copy_file(path("run8.lcmlog"), runs + "/recurrent-s8.lcmlog");
+  std::filesystem::resize_file(runs + "/recurrent-s8.lcmlog",
+                               std::filesystem::file_size(runs + "/recurrent-s8.lcmlog") - 77);
+  std::ofstream(runs + "/recurrent-s9.lcmlog") << "";
+  const robozoo::testing::Outcome o = cli("zoo " + runs + " -q --cell 120x90 -o " + path("runs.png"));
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("left out " + runs + "/recurrent-s9.lcmlog: "), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("(2 robots)"), std::string::npos) << o.output;
+  EXPECT_EQ(read_png(path("runs.png")).width(), 12 + 2 * (120 + 12));
+  // Nothing to draw yet: a clear error, no picture.
+  const std::string started = path("started");
+  std::filesystem::create_directory(started);
+  std::ofstream(started + "/recurrent-s9.lcmlog") << "";
+  const robozoo::testing::Outcome none = cli("zoo " + started + " -o " + path("none.png"));
+  EXPECT_NE(none.status, 0);
+  EXPECT_NE(none.output.find("no trial has a champion yet"), std::string::npos) << none.output;
+  EXPECT_FALSE(file_exists(path("none.png")));
+}
+
 TEST_F(RenderCli, LogWithoutChampions) {
   {
     EventLogWriter w = EventLogWriter::create(path("empty-run.lcmlog"));

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "evolve/messages/build.hpp"
 #include "evolve/run/evaluator.hpp"
@@ -142,6 +143,84 @@ TEST(ResultRobots, ATrialInProgressShowsItsChampionSoFarFromItsPortableCheckpoin
   const RobotCard card = result_card(robots[0]);
   ASSERT_EQ(card.caption.size(), 2u);
   EXPECT_NE(card.caption[0].find("seed 3 \u00b7 2 of 4 generations"), std::string::npos) << card.caption[0];
+}
+
+TEST(ResultRobots, ARunningExperimentsFolderOfLogsGivesEachTrialsChampionSoFar) {
+  // robozoo-experiment's runs folder while it works: a finished trial, one in
+  // progress whose log ends mid-event, and one whose log is still empty.
+  TempDir dir;
+  fs::create_directory(dir / "runs");
+  evolve_small_run(dir / "runs/feedforward-s1.lcmlog", "feedforward-s1", 2, 1, Regime::FeedForward);
+  RunConfig c = small_run_config(4);
+  c.seed = 3;
+  InProcessEvaluator evaluator(c.eval);
+  for (const char* name : {"recurrent-s3", "recurrent-s10"}) {
+    EvolveOptions o;
+    o.log_path = dir / ("runs/" + std::string(name) + ".lcmlog");
+    o.run_id = name;
+    Evolution evo(c, o, evaluator);
+    if (std::string(name) == "recurrent-s3") {
+      evo.step();
+      evo.step();
+    }
+  }
+  // Half an event more at the end of the trial in progress, as while it is written.
+  const std::string in_progress = dir / "runs/recurrent-s3.lcmlog";
+  const std::string whole = read_file(in_progress);
+  const std::string partial = whole + whole.substr(0, 40);
+  std::ofstream(in_progress, std::ios::binary | std::ios::trunc) << partial;
+
+  // A fourth trial in its first generation: its log holds the run message
+  // only (the first event of an LCM log: a 28-byte header whose last two
+  // big-endian words are the channel's and the data's lengths).
+  const std::string first_log = read_file(dir / "runs/feedforward-s1.lcmlog");
+  ASSERT_GT(first_log.size(), 28u);
+  const auto be32 = [&](size_t at) {
+    uint32_t v = 0;
+    for (size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<uint8_t>(first_log[at + k]);
+    return v;
+  };
+  const size_t first_event = 28 + be32(20) + be32(24);
+  ASSERT_LT(first_event, first_log.size());
+  std::ofstream(dir / "runs/feedforward-s14.lcmlog", std::ios::binary) << first_log.substr(0, first_event);
+
+  std::vector<std::string> files = results_files({dir / "runs"});
+  ASSERT_EQ(files.size(), 4u);
+  ASSERT_EQ(fs::path(files[1]).filename(), "feedforward-s14.lcmlog");
+  files.erase(files.begin() + 1);  // read on its own below
+  EXPECT_EQ(fs::path(files[0]).filename(), "feedforward-s1.lcmlog");
+  EXPECT_EQ(fs::path(files[1]).filename(), "recurrent-s3.lcmlog");
+  EXPECT_EQ(fs::path(files[2]).filename(), "recurrent-s10.lcmlog");  // seeds as numbers
+  // Without a list of what is left out, the log that has no run yet is an error naming it.
+  try {
+    read_results(files);
+    ADD_FAILURE() << "read a log without a run";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("recurrent-s10.lcmlog"), std::string::npos) << e.what();
+  }
+  std::vector<std::string> left_out;
+  const std::vector<RunResults> drawn = read_results(files, &left_out);
+  ASSERT_EQ(left_out.size(), 1u);
+  EXPECT_EQ(left_out[0].rfind(files[2] + ": ", 0), 0u) << left_out[0];
+  ASSERT_EQ(drawn.size(), 2u);
+  EXPECT_EQ(drawn[1].run.path, in_progress);
+  const std::string started = dir / "runs/feedforward-s14.lcmlog";
+  EXPECT_EQ(read_results({started}).front().run.run_id, "feedforward-s1");  // readable, no champion
+  left_out.clear();
+  EXPECT_TRUE(read_results({started}, &left_out).empty());
+  EXPECT_EQ(left_out, std::vector<std::string>{started + ": no finished generation yet"});
+  const std::vector<ResultRobot> robots = result_robots(drawn, false, 2);
+  EXPECT_EQ(robots[0].generations, 2);
+  EXPECT_EQ(robots[0].planned, 2);
+  EXPECT_EQ(robots[1].generations, 2);
+  EXPECT_EQ(robots[1].planned, 4);
+  for (size_t i = 0; i < 2; ++i)
+    EXPECT_EQ(robots[i].champion().genome.fitness, best_of_run(drawn[i].run)->genome.fitness);
+  EXPECT_NE(result_card(robots[1]).caption[0].find("seed 3 \u00b7 2 of 4 generations"), std::string::npos)
+      << result_card(robots[1]).caption[0];
+  // Compact results in a folder come before its logs: the logs are not listed then.
+  std::ofstream(dir / "runs/recurrent-s3.portable-checkpoint") << "";
+  EXPECT_EQ(results_files({dir / "runs"}), std::vector<std::string>{dir / "runs/recurrent-s3.portable-checkpoint"});
 }
 
 }  // namespace
