@@ -36,6 +36,7 @@ extern "C" {
 #include "evolve/core/version.hpp"
 #include "util/exit_status.hpp"
 #include "util/stop_signals.hpp"
+#include "util/parse_options.hpp"
 
 using namespace robozoo;
 using namespace robozoo::render;
@@ -434,12 +435,8 @@ int main(int argc, char** argv) {
   // libx264 and the MP4 muxer report every file on stderr; keep errors only.
   av_log_set_level(AV_LOG_ERROR);
   return robozoo::exit_status_of("robozoo-render", [&] {
-    try {
-      app.set_version_flag("--version", robozoo::version_line());
-      app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-      return app.exit(e);
-    }
+    app.set_version_flag("--version", robozoo::version_line());
+    if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-render")) return *stop;
     if (zc->parsed()) return run_zoo(zoo);
     if (vc->parsed()) return run_video(video);
     if (lc->parsed()) return run_live_command(live_args);

@@ -26,6 +26,7 @@
 #include "evolve/core/version.hpp"
 #include "runlog/progress_bar.hpp"
 #include "util/exit_status.hpp"
+#include "util/parse_options.hpp"
 
 namespace {
 
@@ -335,18 +336,7 @@ int main(int argc, char** argv) {
   simc->add_flag("--force", s.options.force, "accept a run written by another robozoo version");
   simc->add_flag("--quiet,-q", s.quiet, "no messages");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "robozoo-replay: " << e.what() << " (see --help)\n";
-    return 2;
-  }
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-replay")) return *stop;
   if (check->parsed() && check->count("--lcm-url")) {
     if (c.lcm_url.empty()) c.lcm_url = kDefaultLcmUrl;
     if (!c.log.empty() || c.full || c.options.all_genomes) {

@@ -26,6 +26,7 @@
 #include "view/serve/server.hpp"
 #include "view/state/view_state.hpp"
 #include "util/stop_signals.hpp"
+#include "util/parse_options.hpp"
 
 namespace {
 
@@ -280,7 +281,7 @@ int main(int argc, char** argv) {
   exp->add_option("--page-dir", a.dirs.page, "folder of the page's files");
   exp->add_option("--three-dir", a.dirs.three, "three.js's folder");
   app.require_subcommand(0, 1);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-view")) return *stop;
   // Bad input or options (std::invalid_argument) exit 2, any other failure 1.
   return exit_status_of("robozoo-view", [&] { return exp->parsed() ? run_export(*exp, a) : run(app, a); });
 }

@@ -18,6 +18,7 @@
 #include "util/stop_signals.hpp"
 #include "evolve/parallel/mpi/mpi_session.hpp"
 #include "evolve/core/version.hpp"
+#include "util/parse_options.hpp"
 
 int main(int argc, char** argv) {
   std::unique_ptr<robozoo::MpiSession> session;
@@ -59,18 +60,7 @@ int main(int argc, char** argv) {
                          "one-generation log for robozoo-render video, robozoo-replay check and robozoo-view, after "
                          "checking that this build evaluates it to the committed fitness");
   robozoo::add_champion_options(*champion_cmd, champion);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return silent ? 0 : app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return silent ? 0 : app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return silent ? 0 : app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    if (!silent) std::cerr << "robozoo-evolve: " << e.what() << " (see --help)\n";
-    return 2;
-  }
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-evolve", silent)) return *stop;
   if (eval_cmd->parsed()) {
     if (session) {
       if (!silent) std::cerr << "robozoo-evolve: --mpi is for evolution runs, not for eval\n";

@@ -34,6 +34,7 @@
 #include "study/experiment/trial_plan.hpp"
 #include "study/experiment/trial_status.hpp"
 #include "util/program_path.hpp"
+#include "util/parse_options.hpp"
 
 using namespace robozoo;
 
@@ -216,11 +217,7 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
                "resume or extend trials whose checkpoints another robozoo version wrote (robozoo-evolve --resume "
                "--force: that version may grow, simulate or breed differently)");
   app.set_version_flag("--version", robozoo::version_line());
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-experiment")) return *stop;
   {
     std::istringstream words(mpirun);
     p.mpirun.clear();

@@ -16,6 +16,7 @@
 #include "evolve/core/version.hpp"
 #include "util/exit_status.hpp"
 #include "study/experiment/trial_plan.hpp"
+#include "util/parse_options.hpp"
 
 using namespace robozoo;
 
@@ -93,7 +94,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--note", o.notes, "a paragraph for the top of the report (repeatable)");
   app.set_version_flag("--version", robozoo::version_line());
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-stats")) return *stop;
   if (compare.size() != 2 || compare[0] == compare[1]) {
     std::cerr << "robozoo-stats: --compare needs two different arms, e.g. feedforward,recurrent-sparse\n";
     return 2;

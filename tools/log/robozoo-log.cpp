@@ -26,6 +26,7 @@
 #include "runlog/text/log_summary.hpp"
 #include "runlog/text/logged_genome.hpp"
 #include "runlog/export/mcap_export.hpp"
+#include "util/parse_options.hpp"
 
 namespace {
 
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"dot", "svg"}))
       ->capture_default_str();
   cppn->add_option("-o,--output", output, "write to this file (default: standard output)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-log")) return *stop;
   if (bus->parsed()) {
     LogContents sent, got;
     try {

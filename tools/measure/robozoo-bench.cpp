@@ -31,6 +31,7 @@
 #include "evolve/run/checkpoint.hpp"
 #include "evolve/sim/episode/simulation.hpp"
 #include "evolve/core/version.hpp"
+#include "util/parse_options.hpp"
 
 using namespace robozoo;
 namespace {
@@ -242,7 +243,7 @@ int main(int argc, char** argv) {
                "measure robozoo's activations only, not also the C library's (the baseline, half the time)");
   app.add_flag("--json", json, "print the figures as JSON (per regime; the baseline's under \"libm_activations\")");
   app.set_version_flag("--version", robozoo::version_line());
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-bench")) return *stop;
   if (log_only && log_path.empty()) {
     std::cerr << "robozoo-bench: --log-only needs --log LOG\n";
     return 2;

@@ -13,6 +13,7 @@
 #include "study/analysis/measure/initial_robots.hpp"
 #include "evolve/core/version.hpp"
 #include "study/experiment/trial_plan.hpp"
+#include "util/parse_options.hpp"
 
 using namespace robozoo;
 
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_file, "configuration file (.json or .toml) over the defaults");
   app.add_flag("--json", json, "print JSON");
   app.set_version_flag("--version", robozoo::version_line());
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-gen0")) return *stop;
 
   RunConfig base;
   try {

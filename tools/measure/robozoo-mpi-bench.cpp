@@ -44,6 +44,7 @@
 #include "evolve/run/pool_evaluator.hpp"
 #include "evolve/core/version.hpp"
 #include "evolve/io/bus.hpp"
+#include "util/parse_options.hpp"
 
 using namespace robozoo;
 using Clock = std::chrono::steady_clock;
@@ -630,21 +631,16 @@ int main(int argc, char** argv) {
       ->needs(resume);
   for (const char* name : {"--regime", "--seed", "--population", "--steps", "--config"})
     resume->excludes(app.get_option(name));
+  app.set_version_flag("--version", robozoo::version_line());
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-mpi-bench", !root)) return *stop;
   try {
-    app.set_version_flag("--version", robozoo::version_line());
-    app.parse(argc, argv);
     o.ranks.clear();
     std::stringstream ss(ranks_text);
     for (std::string item; std::getline(ss, item, ',');) {
       const int r = std::stoi(item);
-      if (r < 2) throw CLI::ValidationError("--project", "rank counts must be >= 2");
+      if (r < 2) throw std::invalid_argument("rank counts must be >= 2, got " + item);
       o.ranks.push_back(r);
     }
-  } catch (const CLI::CallForHelp& e) {
-    return root ? app.exit(e) : 0;
-  } catch (const CLI::ParseError& e) {
-    if (root) std::cerr << "robozoo-mpi-bench: " << e.what() << "\n";
-    return 2;
   } catch (const std::exception& e) {
     if (root) std::cerr << "robozoo-mpi-bench: --project: " << e.what() << "\n";
     return 2;

@@ -17,6 +17,7 @@
 #include "evolve/sim/robots/random_robot.hpp"
 #include "evolve/sim/episode/simulation.hpp"
 #include "evolve/core/version.hpp"
+#include "util/parse_options.hpp"
 
 using namespace robozoo;
 
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
   app.add_option("--bench-sizes", bench_sizes, "sphere counts for --bench");
   app.add_option("--bench-robots", bench_robots, "robots per size for --bench");
   app.set_version_flag("--version", robozoo::version_line());
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-simstats")) return *stop;
 
   Rng rng(seed);
   if (bench) {

@@ -33,6 +33,7 @@
 #include "evolve/neat/xor/xor_presets.hpp"
 #include "evolve/neat/xor/xor_task.hpp"
 #include "evolve/core/version.hpp"
+#include "util/parse_options.hpp"
 
 namespace {
 
@@ -196,7 +197,7 @@ int main(int argc, char** argv) {
       ->take_all();
   app.add_flag("--json", as_json, "print the results as JSON instead of a table");
   app.set_version_flag("--version", robozoo::version_line());
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-xor")) return *stop;
 
   const robozoo::XorPreset preset = robozoo::xor_preset(preset_name);
   robozoo::NeatParams params = preset.params;

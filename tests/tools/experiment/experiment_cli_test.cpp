@@ -115,7 +115,10 @@ TEST(ExperimentCli, AStoppedExperimentResumesWithoutRedoingFinishedTrials) {
 
 TEST(ExperimentCli, UsageErrors) {
   TempDir dir;
-  EXPECT_EQ(run_shell(bin("robozoo-experiment") + " --trials 2").status, 106);  // CLI11: --out is required
+  const Outcome no_out = run_shell(bin("robozoo-experiment") + " --trials 2");
+  EXPECT_EQ(no_out.status, 2);
+  EXPECT_NE(no_out.output.find("robozoo-experiment: --out is required (see --help)"), std::string::npos)
+      << no_out.output;
   const auto no_evolve = run_shell(join(driver(dir.path, kTiny)) + " --evolve /nonexistent/robozoo-evolve");
   EXPECT_EQ(no_evolve.status, 2);
   EXPECT_NE(no_evolve.output.find("cannot run /nonexistent/robozoo-evolve"), std::string::npos);
