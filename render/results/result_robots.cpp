@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "runlog/read/champion_record.hpp"
-#include "study/analysis/read/log_results.hpp"
+#include "study/analysis/read/continued_results.hpp"
 #include "study/analysis/stats_job.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 
@@ -70,12 +70,12 @@ std::vector<RunResults> read_results(const std::vector<std::string>& files, std:
     if (!ends_with(f, kLogExtension)) {
       out.push_back(read_results_or_portable_checkpoint(f));
     } else if (!left_out) {
-      out.push_back(results_from_log(f));
+      out.push_back(run_results_of_log(f));
     } else {
       // A trial's log while it runs: empty until its first generation is
       // evaluated, and perhaps unreadable for another reason, said with it.
       try {
-        out.push_back(results_from_log(f));
+        out.push_back(run_results_of_log(f));
       } catch (const std::exception& e) {
         left_out->push_back(f + ": " + e.what());
         continue;

@@ -5,7 +5,8 @@
 //  - An exported champion opened from file://, no server running: the robot is
 //    drawn (red and blue sphere pixels) and it plays its samples.
 //  - The experiment page of a small robozoo-experiment folder lists every
-//    trial, and shows the new generation when the experiment is extended by one.
+//    trial and each trial's robot in the thumbnail strips (from its log), and
+//    shows the new generation when the experiment is extended by one.
 //  - The experiment page of the committed M2 results: a click on a trial's row
 //    (or its curve) shows its best-of-run robot moving under the chart, made
 //    again by the server from its compact result, the URL naming the trial;
@@ -116,6 +117,10 @@ TEST(ViewShare, ExperimentPageShowsEveryTrialAndFollowsThem) {
   EXPECT_EQ(trial["status"], 200);
   EXPECT_NE(trial["text"].get<std::string>().find("id=\"robozoo-data\""), std::string::npos);
   EXPECT_EQ(browser.evaluate(tab, "fetch('/trial?name=recurrent-s99').then(r => r.status)"), 404);
+  // The thumbnail strips: every trial's best-of-run robot, read from its log.
+  const nlohmann::json two_each =
+      nlohmann::json::parse(R"([{"arm":"feedforward","robots":2},{"arm":"recurrent","robots":2}])");
+  ASSERT_TRUE(wait_for([&] { return stats()["zoo"] == two_each; }, 30)) << stats().dump();
 
   // One more generation for every trial: the page follows.
   const robozoo::testing::Outcome more = experiment(3);

@@ -237,8 +237,28 @@ function extent(robot) {
   return Math.max(x1 - x0, (y1 - y0) * THUMB_W / THUMB_H);
 }
 
+/// The strips are made again when a trial's best so far changes (a new
+/// champion, a new trial), at most every ZOO_EVERY_MS: the server makes only the
+/// changed trials' robots again.
+const ZOO_EVERY_MS = 10000;
+const zooLoad = { signature: null, at: 0, busy: false };
+
+function zooSignature(summary) {
+  return summary.trials.map((t) => `${t.name}:${t.best}`).join(",");
+}
+
+function maybeReloadZoo() {
+  if (!state.summary || zooLoad.busy) return;
+  const sig = zooSignature(state.summary);
+  if (sig === zooLoad.signature || Date.now() - zooLoad.at < ZOO_EVERY_MS) return;
+  zooLoad.signature = sig;
+  loadZoo();
+}
+
 async function loadZoo() {
   const box = $("zoo");
+  zooLoad.busy = true;
+  zooLoad.at = Date.now();
   try {
     const r = await fetch("/zoo.json", { cache: "no-store" });
     if (!r.ok) throw new Error(r.statusText);
@@ -258,15 +278,18 @@ async function loadZoo() {
       for (const robot of a.robots) {
         const c = document.createElement("canvas");
         c.width = THUMB_W; c.height = THUMB_H; c.dataset.name = robot.name;
-        // One scale, but a robot that would be under a third of its thumbnail is drawn larger, marked.
+        // One scale, but a robot that would be under a quarter of its thumbnail is drawn
+        // larger, to a third of it, and marked with its magnification (so at least ×1.3).
         const own = 0.9 * THUMB_W / extent(robot), k = own / scale;
-        const magnify = k > 3 ? k / 3 : 1;
+        const magnify = k > 4 ? k / 3 : 1;
+        const times = `×${magnify < 9.95 ? magnify.toFixed(1) : magnify.toFixed(0)}`;
         drawThumb(c, robot, scale * magnify);
         if (magnify > 1) {
           const g = c.getContext("2d");
-          g.fillStyle = "#222"; g.font = "9px sans-serif"; g.fillText(`×${magnify.toFixed(0)}`, 2, THUMB_H - 3);
+          g.fillStyle = "#222"; g.font = "9px sans-serif"; g.fillText(times, 2, THUMB_H - 3);
         }
-        c.title = `${robot.name}: fitness ${num(robot.fitness)}${magnify > 1 ? `, drawn ×${magnify.toFixed(0)}` : ""} (click to watch it)`;
+        const soFar = robot.generations < robot.planned ? `, its champion so far (${robot.generations} of ${robot.planned} generations)` : "";
+        c.title = `${robot.name}: fitness ${num(robot.fitness)}${soFar}${magnify > 1 ? `, drawn ${times}` : ""} (click to watch it)`;
         c.addEventListener("click", () => openTrial(robot.name));
         strip.appendChild(c);
       }
@@ -277,6 +300,8 @@ async function loadZoo() {
     if (zoo.refused.length) box.title = "not shown (this build does not reproduce them):\n" + zoo.refused.join("\n");
   } catch (err) {
     box.hidden = true;
+  } finally {
+    zooLoad.busy = false;
   }
 }
 
@@ -288,6 +313,7 @@ async function refresh() {
     state.updates++;
     $("status").textContent = "following"; $("status").className = "status live";
     table(); draw();
+    maybeReloadZoo();
   } catch (err) {
     state.failures++;
     $("status").textContent = "server gone: retrying"; $("status").className = "status lost";
@@ -295,7 +321,6 @@ async function refresh() {
   setTimeout(refresh, 2000);
 }
 refresh();
-loadZoo();
 openTrial(trialOfHash());
 window.addEventListener("resize", draw);
 

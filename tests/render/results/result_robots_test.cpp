@@ -223,5 +223,39 @@ TEST(ResultRobots, ARunningExperimentsFolderOfLogsGivesEachTrialsChampionSoFar) 
   EXPECT_EQ(results_files({dir / "runs"}), std::vector<std::string>{dir / "runs/recurrent-s3.portable-checkpoint"});
 }
 
+TEST(ResultRobots, AContinuedLogInTheFolderCountsItsEarlierGenerations) {
+  // A trial moved to this machine by its portable checkpoint: its log begins
+  // at generation 3, and generations 0-2 come beside it (<log>.earlier.json).
+  TempDir dir;
+  const RunConfig c = small_run_config(5);
+  InProcessEvaluator evaluator(c.eval);
+  EvolveOptions o;
+  o.run_id = "recurrent-s7";
+  fs::create_directories(dir / "whole");
+  fs::create_directories(dir / "before");
+  o.log_path = dir / "whole/recurrent-s7.lcmlog";
+  Evolution(c, o, evaluator).run();
+  o.log_path = dir / "before/recurrent-s7.lcmlog";
+  {
+    Evolution evo(c, o, evaluator);
+    for (int g = 0; g < 3; ++g) evo.step();
+  }
+  unpack_portable_checkpoint(pack_portable_checkpoint(dir / "before/recurrent-s7.lcmlog"),
+                             dir / "runs/recurrent-s7.lcmlog");
+  o.log_path = dir / "runs/recurrent-s7.lcmlog";
+  o.resume = true;
+  Evolution(c, o, evaluator).run();
+
+  const std::vector<std::string> files = results_files({dir / "runs"});
+  ASSERT_EQ(files, std::vector<std::string>{dir / "runs/recurrent-s7.lcmlog"});
+  const std::vector<RunResults> results = read_results(files);
+  const RunResults whole = read_results({dir / "whole/recurrent-s7.lcmlog"}).front();
+  ASSERT_EQ(results[0].run.generations.size(), 5u);
+  EXPECT_EQ(best_of_run(results[0].run)->genome.fitness, best_of_run(whole.run)->genome.fitness);
+  EXPECT_EQ(best_of_run(results[0].run)->generation, best_of_run(whole.run)->generation);
+  const std::vector<ResultRobot> robots = result_robots(results, false, 1);
+  EXPECT_EQ(robots[0].champion().genome.fitness, best_of_run(whole.run)->genome.fitness);
+}
+
 }  // namespace
 }  // namespace robozoo::render
