@@ -98,7 +98,9 @@ function table() {
   const bad = (s.unreadable_results || []).length;
   $("source").textContent = s.dir + extra + (bad ? ` (${bad} result ${bad === 1 ? "file" : "files"} unreadable)` : "");
   $("source").title = (s.unreadable_results || []).join("\n");
-  $("sig-key").textContent = `marks under the axis: generations where ${s.test} gives p < ${s.alpha}`;
+  $("sig-key").textContent =
+    `marks under the axis: generations where ${s.test} gives p < ${s.alpha} (each generation alone, uncorrected: ` +
+    "a glance, not a verdict)";
   const rows = s.trials.map((t) => {
     const tr = document.createElement("tr");
     tr.dataset.name = t.name;
