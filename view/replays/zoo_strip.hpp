@@ -2,7 +2,8 @@
 // The experiment page's thumbnail strips (/zoo.json): per arm, every trial's
 // best-of-run robot (its champion so far while it runs) in its starting pose,
 // by fitness (best first), as the zoo sheets of robozoo-render show them. A
-// trial with a log is read from its log (study's results_from_log), one known
+// trial with a log is read from its log (study's run_results_of_log: a
+// continued log with its earlier generations), one known
 // from its compact result alone from that. Each robot is grown and evaluated
 // again by this build (evolve/run/champion_log's replay_champion, no pose
 // stream) and shown only when it gives the recorded fitness; the others are

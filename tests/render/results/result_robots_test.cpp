@@ -12,6 +12,7 @@
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
+#include "tests/support/continued_run.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
@@ -227,24 +228,8 @@ TEST(ResultRobots, AContinuedLogInTheFolderCountsItsEarlierGenerations) {
   // A trial moved to this machine by its portable checkpoint: its log begins
   // at generation 3, and generations 0-2 come beside it (<log>.earlier.json).
   TempDir dir;
-  const RunConfig c = small_run_config(5);
-  InProcessEvaluator evaluator(c.eval);
-  EvolveOptions o;
-  o.run_id = "recurrent-s7";
-  fs::create_directories(dir / "whole");
-  fs::create_directories(dir / "before");
-  o.log_path = dir / "whole/recurrent-s7.lcmlog";
-  Evolution(c, o, evaluator).run();
-  o.log_path = dir / "before/recurrent-s7.lcmlog";
-  {
-    Evolution evo(c, o, evaluator);
-    for (int g = 0; g < 3; ++g) evo.step();
-  }
-  unpack_portable_checkpoint(pack_portable_checkpoint(dir / "before/recurrent-s7.lcmlog"),
-                             dir / "runs/recurrent-s7.lcmlog");
-  o.log_path = dir / "runs/recurrent-s7.lcmlog";
-  o.resume = true;
-  Evolution(c, o, evaluator).run();
+  evolve_whole_and_continued(small_run_config(5), "recurrent-s7", dir / "whole/recurrent-s7.lcmlog",
+                             dir / "before/recurrent-s7.lcmlog", dir / "runs/recurrent-s7.lcmlog", 3);
 
   const std::vector<std::string> files = results_files({dir / "runs"});
   ASSERT_EQ(files, std::vector<std::string>{dir / "runs/recurrent-s7.lcmlog"});

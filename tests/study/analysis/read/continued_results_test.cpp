@@ -5,10 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "evolve/run/evaluator.hpp"
-#include "evolve/run/evolution.hpp"
 #include "study/analysis/read/log_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
+#include "tests/support/continued_run.hpp"
 #include "tests/support/small_run.hpp"
 #include "tests/support/subprocess.hpp"
 
@@ -34,24 +33,9 @@ nlohmann::json without_wall_time(const RunResults& r) {
 
 TEST(ContinuedResults, AContinuedLogWithItsEarlierResultIsTheUninterruptedRun) {
   TempDir dir;
-  const RunConfig c = small_run_config(5);
-  InProcessEvaluator evaluator(c.eval);
-  EvolveOptions o;
-  o.run_id = "r";
-  o.log_path = dir / "whole/r.lcmlog";
-  std::filesystem::create_directories(dir / "whole");
-  std::filesystem::create_directories(dir / "a");
-  Evolution(c, o, evaluator).run();
-  o.log_path = dir / "a/r.lcmlog";
-  {
-    Evolution evo(c, o, evaluator);
-    for (int g = 0; g < 3; ++g) evo.step();
-  }
-  // The log moves away; the portable checkpoint goes on in another folder.
-  unpack_portable_checkpoint(pack_portable_checkpoint(dir / "a/r.lcmlog"), dir / "b/r.lcmlog");
-  o.log_path = dir / "b/r.lcmlog";
-  o.resume = true;
-  Evolution(c, o, evaluator).run();
+  // The log moves away after 3 generations; the portable checkpoint goes on in another folder.
+  evolve_whole_and_continued(small_run_config(5), "r", dir / "whole/r.lcmlog", dir / "a/r.lcmlog", dir / "b/r.lcmlog",
+                             3);
 
   const RunResults whole = results_from_log(dir / "whole/r.lcmlog");
   const RunResults merged = run_results_of_log(dir / "b/r.lcmlog");
