@@ -50,8 +50,8 @@
 # milestone being run (the first without DIR/<name>.done whose results are not all
 # committed) into the repository beside its compact results (checkpoints/ for M1,
 # m3/checkpoints/, sensitivity/<factor>/checkpoints/, ...; 130-280 kB a trial) and removes
-# those of finished trials: commit them, and the run on a fresh clone continues those
-# trials from there instead of generation 0.
+# those of finished trials, in every milestone: commit them, and the run on a fresh clone
+# continues those trials from there instead of generation 0.
 # DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -215,6 +215,19 @@ experiment_command() {  # runs folder, arms, generations, trials, results folder
   fi
 }
 if [ "$action" = save ]; then
+  # A trial with its compact result (committed, or finished here) is no longer in progress:
+  # its portable checkpoint goes, in every milestone, the finished ones included.
+  for m in "${milestones[@]}"; do
+    read -r name _ _ _ _ _ folder _ _ <<<"$m"
+    for f in "$(checkpoints_folder "$folder")"/*.portable-checkpoint; do
+      [ -e "$f" ] || continue
+      trial=$(basename "$f" .portable-checkpoint)
+      if [ -e "$paper/$folder/$trial.results.json" ] || [ -e "$dir/$folder/$trial.results.json" ]; then
+        rm -f "$f"
+        echo "paper_experiment.sh: $name: $trial finished: removed $f"
+      fi
+    done
+  done
   for m in "${milestones[@]}"; do
     read -r name version runs arms gens ntrials folder sets _ <<<"$m"
     [ -e "$dir/$name.done" ] && continue

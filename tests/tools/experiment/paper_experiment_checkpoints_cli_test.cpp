@@ -75,12 +75,13 @@ TEST(PaperExperimentCheckpointsCli, ATrialInProgressContinuesOnANewMachineFromTh
               timeless(whole + "/" + folder + "/feedforward-s1.results.json"))
         << folder;
 
-  // Finished now: the next --save-checkpoints removes its file (every milestone is done
-  // here, so it names none; the first milestone's folder is cleaned where it is not done).
-  fs::remove(second + "/M1.done");
+  // Finished now: the next --save-checkpoints removes its file, though every milestone is
+  // done here (none is in progress to save), and says so.
   const auto cleaned = run_shell(script(paper, second, "--save-checkpoints"));
   EXPECT_EQ(cleaned.status, 0) << cleaned.output;
   EXPECT_FALSE(fs::exists(file)) << cleaned.output;
+  EXPECT_NE(cleaned.output.find("M1: feedforward-s1 finished: removed"), std::string::npos) << cleaned.output;
+  EXPECT_NE(cleaned.output.find("every milestone finished on this machine"), std::string::npos) << cleaned.output;
 }
 
 }  // namespace
