@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <optional>
 #include <regex>
@@ -17,6 +18,7 @@
 #include "robozoo/run_t.hpp"
 #include "runlog/read/log_reader.hpp"
 #include "evolve/run/run_results.hpp"
+#include "study/analysis/read/continued_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 
 namespace robozoo::view {
@@ -60,6 +62,29 @@ double age_seconds(const fs::path& p) {
   const fs::file_time_type m = fs::last_write_time(p, ec);
   if (ec) return std::numeric_limits<double>::infinity();
   return std::chrono::duration<double>(fs::file_time_type::clock::now() - m).count();
+}
+
+/// The bytes [from, to) of the file at `path`; fewer when the file is shorter.
+std::string bytes_between(const std::string& path, int64_t from, int64_t to) {
+  std::ifstream in(path, std::ios::binary);
+  std::string out(static_cast<size_t>(std::max<int64_t>(0, to - from)), '\0');
+  if (!in.seekg(from)) return {};
+  in.read(out.data(), static_cast<std::streamsize>(out.size()));
+  out.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
+  return out;
+}
+
+constexpr int64_t kTailBytes = 256;
+
+/// Sets a trial's best-so-far at generation `generation`; false (nothing set) when the number
+/// is negative or beyond what the trial may hold (its planned generations, when known).
+bool set_best_so_far(TrialProgress& t, int64_t generation, double value) {
+  const int64_t limit = t.planned > 0 ? std::min<int64_t>(t.planned, kMaxWatchedGenerations) : kMaxWatchedGenerations;
+  if (generation < 0 || generation >= limit) return false;
+  const size_t at = static_cast<size_t>(generation);
+  if (t.best_so_far.size() <= at) t.best_so_far.resize(at + 1, kNaN);
+  t.best_so_far[at] = value;
+  return true;
 }
 
 }  // namespace
@@ -146,7 +171,17 @@ bool ExperimentWatch::poll() {
   bool changed = false;
   for (TrialProgress& t : work) {
     const TrialProgress before = t;
-    read_trial(t);
+    std::string problem;
+    try {
+      read_trial(t);
+    } catch (const std::exception& e) {  // gone or unreadable since it was listed: shown as it was
+      t = before;
+      t.state = "stopped";
+      problem = e.what();
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    changed |= problem.empty() ? unreadable_.erase(t.log_path) > 0 : unreadable_[t.log_path] != problem;
+    if (!problem.empty()) unreadable_[t.log_path] = problem;
     changed |= t.best_so_far != before.best_so_far || t.state != before.state || t.planned != before.planned ||
                t.checkpoint != before.checkpoint || before.state.empty();
   }
@@ -216,11 +251,16 @@ bool ExperimentWatch::poll_results() {
       t.arm = r.run.arm;
       t.seed = r.run.seed;
       t.planned = r.run.generations_requested;
-      for (const GenerationRecord& g : r.run.generations) {
-        if (g.generation < 0) continue;
-        const size_t at = static_cast<size_t>(g.generation);
-        if (t.best_so_far.size() <= at) t.best_so_far.resize(at + 1, kNaN);
-        t.best_so_far[at] = g.best_so_far_fitness;
+      bool fits = true;
+      for (const GenerationRecord& g : r.run.generations)
+        fits = fits && set_best_so_far(t, g.generation, g.best_so_far_fitness);
+      if (!fits || (!r.run.generations.empty() && r.run.generations.front().generation != 0)) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        changed |= unreadable_
+                       .emplace(p.string(), p.string() + ": its generations are not 0, 1, ... within the run's " +
+                                                std::to_string(t.planned))
+                       .second;
+        continue;
       }
       const int32_t done = static_cast<int32_t>(t.best_so_far.size());
       t.state = t.planned > 0 && done >= t.planned ? "finished" : "stopped";
@@ -237,20 +277,39 @@ bool ExperimentWatch::poll_results() {
 }
 
 void ExperimentWatch::read_trial(TrialProgress& t) {
+  // A log cut back or rewritten under what was read is read again from its start.
+  if (t.offset > 0 && bytes_between(t.log_path, t.offset - static_cast<int64_t>(t.tail.size()), t.offset) != t.tail) {
+    t.offset = 0;
+    t.tail.clear();
+    t.best_so_far.clear();
+    t.planned = 0;
+  }
+  if (t.offset == 0) {
+    // A log continued here from a portable checkpoint: its earlier generations are beside it.
+    const std::string earlier = earlier_results_path_for(t.log_path);
+    std::error_code ec;
+    if (fs::exists(earlier, ec)) {
+      const RunResults r = read_run_results(earlier);
+      t.planned = r.run.generations_requested;
+      for (const GenerationRecord& g : r.run.generations)
+        if (!set_best_so_far(t, g.generation, g.best_so_far_fitness))
+          throw std::runtime_error(earlier + ": generation " + std::to_string(g.generation) + " is beyond the run's " +
+                                   std::to_string(t.planned));
+    }
+  }
   const ScannedLog chunk = scan_event_log_from(t.log_path, t.offset);
   for (const LogRecord& r : chunk.contents.records) {
     if (r.channel == kChannelGeneration) {
       generation_t g;
-      if (g.decode(r.data.data(), 0, static_cast<int>(r.data.size())) < 0 || g.generation < 0) continue;
-      const size_t at = static_cast<size_t>(g.generation);
-      if (t.best_so_far.size() <= at) t.best_so_far.resize(at + 1, kNaN);
-      t.best_so_far[at] = g.best_so_far_fitness;
+      if (g.decode(r.data.data(), 0, static_cast<int>(r.data.size())) < 0) continue;
+      set_best_so_far(t, g.generation, g.best_so_far_fitness);  // a number beyond the run is damage: skipped
     } else if (r.channel == kChannelRun) {
       run_t run;
       if (run.decode(r.data.data(), 0, static_cast<int>(r.data.size())) >= 0) t.planned = run.generations;
     }
   }
   t.offset += chunk.end_of_events;
+  t.tail = bytes_between(t.log_path, std::max<int64_t>(0, t.offset - kTailBytes), t.offset);
   const fs::path checkpoint = t.log_path + ".checkpoint";
   std::error_code ec;
   t.checkpoint = fs::exists(checkpoint, ec);

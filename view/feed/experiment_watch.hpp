@@ -14,6 +14,14 @@
 // checkpoints there (<arm>-s<seed>.portable-checkpoint, a trial in progress
 // elsewhere) count as the compact result of their finished generations.
 //
+// A log that begins at generation k (a trial continued here from a portable
+// checkpoint) takes generations 0..k-1 from the earlier result beside it
+// (<log>.earlier.json). A log cut back under what was read (a stopped trial
+// resumed: robozoo-evolve cuts the unfinished generation) or rewritten is read
+// again from its start; one that cannot be read keeps what was shown, marked
+// stopped, and is listed as unreadable. A generation number beyond the run's
+// planned generations (or kMaxWatchedGenerations) is damage, not a size.
+//
 // What the page gets (summary_json): every trial's best-so-far fitness per
 // generation and its state; each arm's mean best-so-far per generation with
 // its standard error (sample s.d. / sqrt(n), over the trials that reached that
@@ -29,6 +37,9 @@
 #include <nlohmann/json.hpp>
 
 namespace robozoo::view {
+
+/// The most generations a trial may show (a larger generation number is damage).
+inline constexpr int32_t kMaxWatchedGenerations = 1000000;
 
 struct ExperimentWatchOptions {
   double running_seconds = 60.0;  ///< a trial whose log or checkpoint changed this recently is running (s)
@@ -48,6 +59,7 @@ struct TrialProgress {
   std::string state;                ///< "running", "finished" or "stopped"
   bool checkpoint = false;          ///< <log>.checkpoint exists (a stopped trial can be resumed)
   int64_t offset = 0;               ///< bytes of the log read (up to the end of its last complete event)
+  std::string tail;                 ///< the log's last bytes before `offset` (up to 256): a rewrite changes them
   std::string results_path;         ///< its compact result, when it is known from one alone (no log)
   std::string results_stamp;        ///< size and time of that file when it was read
 };

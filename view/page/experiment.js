@@ -96,7 +96,7 @@ function table() {
   const s = state.summary;
   const extra = (s.results_dirs || []).length ? ` + compact results in ${s.results_dirs.join(", ")}` : "";
   const bad = (s.unreadable_results || []).length;
-  $("source").textContent = s.dir + extra + (bad ? ` (${bad} result ${bad === 1 ? "file" : "files"} unreadable)` : "");
+  $("source").textContent = s.dir + extra + (bad ? ` (${bad} ${bad === 1 ? "file" : "files"} unreadable)` : "");
   $("source").title = (s.unreadable_results || []).join("\n");
   $("sig-key").textContent =
     `marks under the axis: generations where ${s.test} gives p < ${s.alpha} (each generation alone, uncorrected: ` +

@@ -21,15 +21,15 @@ namespace fs = std::filesystem;
 using namespace robozoo::render::testing;
 using robozoo::testing::TempDir;
 
-/// A trial log whose generations have these best-so-far values; the run was
+/// A trial log whose generations, from `first` on, have these best-so-far values; the run was
 /// started for `planned` generations.
-void write_trial(const std::string& path, const std::vector<double>& bsf, int planned = 5) {
+void write_trial(const std::string& path, const std::vector<double>& bsf, int planned = 5, int first = 0) {
   EventLogWriter w = EventLogWriter::create(path);
   run_t run = run_message("t");
   run.generations = planned;
   append(w, kChannelRun, run);
   for (size_t g = 0; g < bsf.size(); ++g) {
-    generation_t m = generation_message("t", static_cast<int32_t>(g), 1);
+    generation_t m = generation_message("t", first + static_cast<int32_t>(g), 1);
     m.best_so_far_fitness = bsf[g];
     append(w, kChannelGeneration, m);
   }
@@ -230,6 +230,89 @@ TEST(ExperimentWatch, TrialsKnownOnlyFromCompactResultsCountToo) {
   TempDir empty;
   ExperimentWatch only_results(empty.path, o);
   EXPECT_EQ(only_results.trials().size(), 3u);
+}
+
+TEST(ExperimentWatch, ALogCutBackWhenItsTrialResumesIsReadAgain) {
+  TempDir d;
+  const std::string log = d / "recurrent-s2.lcmlog";
+  write_trial(d / "a.tmp", {5.0, 5.1, 5.2});  // read, then the trial stops during generation 3
+  write_trial(d / "b.tmp", {5.0, 5.1});       // its checkpoint holds 0-1: the resume cuts 2
+  write_trial(d / "c.tmp", {5.0, 5.1, 6.0, 6.5});
+  const std::string a = bytes_of(d / "a.tmp"), b = bytes_of(d / "b.tmp"), c = bytes_of(d / "c.tmp");
+  for (const char* f : {"a.tmp", "b.tmp", "c.tmp"}) fs::remove(d / f);
+  put(log, a);
+  ExperimentWatch w(d.path, ExperimentWatchOptions{});
+  EXPECT_EQ(w.trials()[0].best_so_far, (std::vector<double>{5.0, 5.1, 5.2}));
+  put(log, b);  // shorter than what was read
+  EXPECT_TRUE(w.poll());
+  EXPECT_EQ(w.trials()[0].best_so_far, (std::vector<double>{5.0, 5.1}));
+  put(log, c);  // the resumed run goes on
+  EXPECT_TRUE(w.poll());
+  EXPECT_EQ(w.trials()[0].best_so_far, (std::vector<double>{5.0, 5.1, 6.0, 6.5}));
+  // Rewritten under what was read, as long as before: read again too.
+  write_trial(d / "d.tmp", {5.0, 5.1, 6.0, 7.5});
+  const std::string e = bytes_of(d / "d.tmp");
+  ASSERT_EQ(e.size(), c.size());
+  put(log, e);
+  EXPECT_TRUE(w.poll());
+  EXPECT_EQ(w.trials()[0].best_so_far, (std::vector<double>{5.0, 5.1, 6.0, 7.5}));
+  EXPECT_EQ(nlohmann::json::parse(w.summary())["unreadable_results"].size(), 0u);
+}
+
+TEST(ExperimentWatch, ALogContinuedFromAPortableCheckpointTakesItsEarlierGenerations) {
+  TempDir d;
+  // Generations 0-1 ran on another machine; this log continues at 2 (robozoo-experiment --checkpoints).
+  write_result(d / "recurrent-s2.lcmlog.earlier.json", 2, {5.0, 5.1}, 4);
+  write_trial(d / "recurrent-s2.lcmlog", {5.5, 6.0}, 4, 2);
+  write_trial(d / "recurrent-s6.lcmlog", {4.0, 4.2, 4.4, 4.6}, 4);
+  ExperimentWatch w(d.path, ExperimentWatchOptions{});
+  const std::vector<TrialProgress> t = w.trials();
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t[0].best_so_far, (std::vector<double>{5.0, 5.1, 5.5, 6.0}));
+  EXPECT_EQ(t[0].state, "finished");
+  nlohmann::json s = nlohmann::json::parse(w.summary());
+  // Every generation has both trials: no gap in the arm's curve.
+  EXPECT_EQ(s["arms"][0]["n"], nlohmann::json::array({2, 2, 2, 2}));
+  EXPECT_NEAR(s["arms"][0]["mean"][0].get<double>(), 4.5, 1e-12);
+
+  // An earlier result that does not read: the trial is listed unreadable, and the watch goes on.
+  std::ofstream(d / "recurrent-s10.lcmlog.earlier.json") << "{";
+  write_trial(d / "recurrent-s10.lcmlog", {3.0}, 4, 2);
+  EXPECT_TRUE(w.poll());
+  s = nlohmann::json::parse(w.summary());
+  ASSERT_EQ(s["unreadable_results"].size(), 1u);
+  EXPECT_NE(s["unreadable_results"][0].get<std::string>().find("recurrent-s10.lcmlog.earlier.json"), std::string::npos)
+      << s["unreadable_results"];
+}
+
+TEST(ExperimentWatch, AGenerationNumberBeyondTheRunIsDamageNotASize) {
+  TempDir d, r;
+  // A log whose last generation message says 2,000,000,000 in a run of 5: not shown, nothing allocated.
+  write_trial(d / "recurrent-s2.lcmlog", {5.0, 5.1}, 5);
+  {
+    const std::string log = d / "recurrent-s2.lcmlog";
+    EventLogWriter w = EventLogWriter::resume(log, static_cast<int64_t>(fs::file_size(log)), 3);
+    generation_t m = generation_message("t", 2000000000, 1);
+    append(w, kChannelGeneration, m);
+  }
+  // A compact result whose generation is beyond its run's: listed unreadable.
+  RunResults bad;
+  {
+    write_result(r / "recurrent-s6.results.json", 6, {4.0, 4.5}, 2);
+    bad = read_run_results(r / "recurrent-s6.results.json");
+    bad.run.generations[1].generation = 2000000000;
+    write_run_results(r / "recurrent-s6.results.json", bad);
+  }
+  ExperimentWatchOptions o;
+  o.results_dirs = {r.path};
+  ExperimentWatch w(d.path, o);
+  const std::vector<TrialProgress> t = w.trials();
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0].best_so_far, (std::vector<double>{5.0, 5.1}));
+  const nlohmann::json s = nlohmann::json::parse(w.summary());
+  ASSERT_EQ(s["unreadable_results"].size(), 1u);
+  EXPECT_NE(s["unreadable_results"][0].get<std::string>().find("recurrent-s6.results.json"), std::string::npos)
+      << s["unreadable_results"];
 }
 
 TEST(ExperimentWatch, AFolderWithoutAnExperimentIsRefused) {
