@@ -268,7 +268,7 @@ int main(int argc, char** argv) {
                  "another machine (repeatable; DIR/results and DIR/checkpoints count by default)");
   app.add_option("--poll", a.poll_seconds, "--experiment: look at the folder this often (s)")->capture_default_str();
   app.add_option("--running-seconds", a.watch.running_seconds,
-                 "--experiment: a trial whose log changed this recently is running (s)")
+                 "--experiment: a trial whose log or checkpoint changed this recently is running (s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app.add_flag("-q,--quiet", a.quiet, "only the address and the final summary");

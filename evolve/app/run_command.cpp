@@ -17,7 +17,7 @@
 namespace robozoo {
 
 namespace {
-/// The README's main job: a short run that finishes in about five minutes on 2 cores.
+/// The presets: short (population 100, 40 generations) and paper (the defaults).
 RunConfig preset_config(const std::string& name) {
   RunConfig c;
   if (name == "short") {
@@ -50,7 +50,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "set one configuration key, after --config: KEY=VALUE with a dotted key and a JSON value or a "
                  "bare name (e.g. neat.initial_links=inputs_to_outputs, sim.target_x=20); repeatable")
       ->take_all();
-  app.add_option("--preset", o.preset, "short (the README's ~5-minute job) or paper (the paper's sizes)");
+  app.add_option("--preset", o.preset, "short (population 100, 40 generations) or paper (the paper's sizes)");
   app.add_option("--log", o.log_path, "the run's LCM log (default: runs/<run id>.lcmlog)");
   app.add_option("--lcm-url", o.lcm_url, "publish live on this LCM URL (given alone: LCM's default URL)")
       ->expected(0, 1)

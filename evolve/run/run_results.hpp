@@ -1,7 +1,7 @@
 #pragma once
 // The compact results of one run: what the experiment's statistics need from
-// its log, small enough to commit (a few kB per run where the log holds
-// hundreds of MB), one JSON file per run (<run id>.results.json).
+// its log, small enough to commit (a few tens of kB per run where the log holds
+// tens or hundreds of MB), one JSON file per run (<run id>.results.json).
 //
 // A compact result is a RunSummary reduced to what analyze_run() reads
 // (compact_summary): every generation record; every generation's champion

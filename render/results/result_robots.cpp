@@ -4,7 +4,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "runlog/read/champion_record.hpp"
 #include "study/analysis/read/continued_results.hpp"
@@ -21,6 +24,19 @@ constexpr const char* kLogExtension = ".lcmlog";
 
 bool ends_with(const std::string& s, const std::string& end) {
   return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+
+/// What makes two files the same run: its id, version and configuration but the generations
+/// requested (a trial's portable checkpoint and its later finished result are one run).
+std::string run_identity(const RunSummary& s) {
+  std::string config = s.config_json;
+  try {
+    nlohmann::json c = nlohmann::json::parse(s.config_json);
+    if (c.is_object()) c.erase("generations");
+    config = c.dump();
+  } catch (const nlohmann::json::exception&) {  // compared as written
+  }
+  return s.run_id + "\n" + s.software_version + "\n" + config;
 }
 
 double best_fitness(const RunResults& r) {
@@ -87,7 +103,27 @@ std::vector<RunResults> read_results(const std::vector<std::string>& files, std:
       out.pop_back();
     }
   }
-  return out;
+  // One run in two files (a finished result and its trial's earlier portable checkpoint, say):
+  // the file with more generations is the run, the first of equals.
+  std::map<std::string, size_t> kept;  // run identity -> index in `out`
+  std::vector<bool> drop(out.size(), false);
+  for (size_t i = 0; i < out.size(); ++i) {
+    const auto [it, fresh] = kept.emplace(run_identity(out[i].run), i);
+    if (fresh) continue;
+    const size_t j = it->second;
+    const bool newer = out[i].run.generations.size() > out[j].run.generations.size();
+    const size_t loser = newer ? j : i, winner = newer ? i : j;
+    drop[loser] = true;
+    if (newer) it->second = i;
+    if (left_out)
+      left_out->push_back(out[loser].run.path + ": the same run as " + out[winner].run.path + ", which holds " +
+                          std::to_string(out[winner].run.generations.size()) + " generations");
+  }
+  std::vector<RunResults> unique;
+  unique.reserve(out.size());
+  for (size_t i = 0; i < out.size(); ++i)
+    if (!drop[i]) unique.push_back(std::move(out[i]));
+  return unique;
 }
 
 std::vector<ResultRobot> result_robots(const std::vector<RunResults>& results, bool poses, int jobs,

@@ -34,7 +34,10 @@ std::vector<std::string> results_files(const std::vector<std::string>& paths);
 /// std::runtime_error naming the first file that cannot be read, except with
 /// `left_out`: then a log that cannot be read (a trial's log is empty until its
 /// first generation is evaluated) and a result without a champion are left
-/// out, each added to `left_out` as "file: why".
+/// out, each added to `left_out` as "file: why". One run found in two files
+/// (the same run id, version and configuration, generations requested aside:
+/// a trial's portable checkpoint beside its finished result) counts once, from
+/// the file with more generations; the other is left out (noted in `left_out`).
 std::vector<RunResults> read_results(const std::vector<std::string>& files,
                                      std::vector<std::string>* left_out = nullptr);
 

@@ -191,16 +191,18 @@ PortableCheckpoint read_portable_checkpoint(const std::string& path) {
 }
 
 std::string portable_refusal(const PortableCheckpoint& p, const std::string& path, const Trial& t,
-                             const ExperimentParams& e, bool force) {
+                             const ExperimentParams& e) {
   if (p.checkpoint.run_id != t.name())
     return path + " is the portable checkpoint of run " + p.checkpoint.run_id + ", not of trial " + t.name();
   const std::string why = trial_mismatch(p.checkpoint, t, e);
   if (!why.empty()) return path + " belongs to another experiment: " + why;
-  if (p.checkpoint.software_version != software_version() && !force)
+  // Not even with --force: the continued trial's compact result joins the earlier generations'
+  // with the new log's as one run, and a run has one version (merge_run_results refuses two).
+  if (p.checkpoint.software_version != software_version())
     return path + " was written by robozoo " + p.checkpoint.software_version + ", this is robozoo " +
            software_version() +
-           "; continue it with that version (another version may grow, simulate or breed differently), or "
-           "--force to continue anyway";
+           "; continue it with that version (another version may grow, simulate or breed differently, and a "
+           "trial's result is one run of one version, so --force does not apply here)";
   return "";
 }
 

@@ -62,8 +62,8 @@ std::string portable_checkpoint_path(const std::string& dir, const Trial& t);
 
 /// The portable checkpoint of the run logged at `log_path`, from its
 /// checkpoint and the log up to it. Throws std::invalid_argument when there is
-/// nothing to carry (no generation finished yet, or the run is finished),
-/// std::runtime_error for unreadable files.
+/// nothing to carry (no generation finished yet), std::runtime_error for
+/// unreadable files. A finished run packs too (all its generations are done).
 PortableCheckpoint pack_portable_checkpoint(const std::string& log_path);
 
 /// The file's bytes.
@@ -83,10 +83,11 @@ RunResults read_results_or_portable_checkpoint(const std::string& path);
 
 /// Empty when `p` (read from `path`) may continue trial `t` of experiment `e`:
 /// its run id is the trial's name, its configuration the trial's
-/// (trial_mismatch), and its software version this robozoo's (unless
-/// `force`). Otherwise one sentence naming the file and what differs.
+/// (trial_mismatch), and its software version this robozoo's (always: the
+/// trial's compact result is one run of one version). Otherwise one sentence
+/// naming the file and what differs.
 std::string portable_refusal(const PortableCheckpoint& p, const std::string& path, const Trial& t,
-                             const ExperimentParams& e, bool force);
+                             const ExperimentParams& e);
 
 /// Leaves the checkpoint and the earlier result beside `log_path` (see above).
 /// Throws std::invalid_argument when the log or its checkpoint is already

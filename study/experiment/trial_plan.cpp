@@ -62,8 +62,8 @@ std::vector<Trial> plan_trials(const ExperimentParams& p) {
 
 std::vector<std::string> evolve_arguments(const Trial& t, const ExperimentParams& p, bool resume) {
   // The sizes go on the command line on resume too: robozoo-evolve takes the run's
-  // configuration from the checkpoint, but builds its evaluator from the command
-  // line, so a resume without them would evaluate with the default steps.
+  // configuration, its evaluator's included, from the checkpoint; the command line
+  // states the same sizes, which the plan has checked against the checkpoint.
   std::vector<std::string> a = {"--log",
                                 t.log_path,
                                 "--quiet",

@@ -165,9 +165,9 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
       "2 recurrent-sparse, 3 recurrent-zero) uses seed 4(k-1)+a+1. Stop it at any time (Ctrl-C)\n"
       "and run the same command again: finished trials are skipped, a stopped one is resumed, the others\n"
       "are started. Run it again with more --generations (and any --arms) to extend finished trials from\n"
-      "their checkpoints. Each finished trial leaves a compact result (<trial>.results.json, a few kB, to\n"
-      "commit) in --results. The paper's sizes are the defaults (30 trials, population 150, 500\n"
-      "generations). Afterwards: robozoo-stats DIR (or robozoo-stats RESULTS_DIR)."};
+      "their checkpoints. Each finished trial leaves a compact result (<trial>.results.json, a few\n"
+      "tens of kB, to commit) in --results. The paper's sizes are the defaults (30 trials, population\n"
+      "150, 500 generations). Afterwards: robozoo-stats DIR (or robozoo-stats RESULTS_DIR)."};
   app.add_option("--out", p.out_dir, "folder of the experiment's logs (created if missing)")->required();
   app.add_option("--results", results_dir,
                  "folder of the trials' compact results (default: OUT/results); a trial whose log and checkpoint "
@@ -215,7 +215,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
   app.add_flag("--status", status_only, "print where each trial stands and exit");
   app.add_flag("--force", force,
                "resume or extend trials whose checkpoints another robozoo version wrote (robozoo-evolve --resume "
-               "--force: that version may grow, simulate or breed differently)");
+               "--force: that version may grow, simulate or breed differently); not a portable checkpoint's, whose "
+               "result must be one version's run");
   app.set_version_flag("--version", robozoo::version_line());
   if (const auto stop = robozoo::parse_options(app, argc, argv, "robozoo-experiment")) return *stop;
   {
@@ -270,7 +271,7 @@ Experiment plan_experiment(const Options& o, std::vector<bool>& from_results, st
     if (!result_done && has_portable) {
       // In progress on another machine: continued from its portable checkpoint.
       const PortableCheckpoint pc = read_portable_checkpoint(pp);
-      const std::string why = portable_refusal(pc, pp, t, p, o.force);
+      const std::string why = portable_refusal(pc, pp, t, p);
       if (!why.empty()) throw std::invalid_argument(why);
       const int32_t planned = pc.checkpoint.config.value("generations", 0);
       if (planned > p.generations)
@@ -377,7 +378,7 @@ std::optional<int> run_trial(Experiment& e, size_t i, const Options& o, const st
     // Read again (it was checked when planning): its checkpoint and earlier result go beside the new log.
     try {
       const PortableCheckpoint pc = read_portable_checkpoint(portable);
-      const std::string why = portable_refusal(pc, portable, t, p, o.force);
+      const std::string why = portable_refusal(pc, portable, t, p);
       if (!why.empty()) throw std::invalid_argument(why);
       unpack_portable_checkpoint(pc, t.log_path);
     } catch (const std::exception& ex) {

@@ -140,6 +140,12 @@ RunResults run_results_up_to(const std::string& log_path, const Checkpoint& c) {
     r.evolve_seconds = c.elapsed_seconds;
     return r;
   }
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(log_path, ec);
+  if (ec) throw std::runtime_error(log_path + ": cannot read the log (" + ec.message() + ")");
+  if (c.log_bytes < 0 || static_cast<uintmax_t>(c.log_bytes) > size)  // checked before anything is allocated
+    throw std::runtime_error(log_path + ": the log is shorter (" + std::to_string(size) +
+                             " bytes) than its checkpoint says (" + std::to_string(c.log_bytes) + ")");
   std::ifstream in(log_path, std::ios::binary);
   if (!in) throw std::runtime_error(log_path + ": cannot read the log");
   std::vector<uint8_t> bytes(static_cast<size_t>(c.log_bytes));

@@ -11,6 +11,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
+#include "study/analysis/read/continued_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 #include "tests/support/continued_run.hpp"
 #include "tests/support/small_run.hpp"
@@ -144,6 +145,27 @@ TEST(ResultRobots, ATrialInProgressShowsItsChampionSoFarFromItsPortableCheckpoin
   const RobotCard card = result_card(robots[0]);
   ASSERT_EQ(card.caption.size(), 2u);
   EXPECT_NE(card.caption[0].find("seed 3 \u00b7 2 of 4 generations"), std::string::npos) << card.caption[0];
+
+  // The trial finishes; its stale portable checkpoint beside its result is the same run: it counts once.
+  {
+    o.resume = true;
+    Evolution evo(c, o, evaluator);
+    while (evo.step()) {
+    }
+  }
+  const std::string result = dir / "recurrent-s3.results.json";
+  write_run_results(result, run_results_of_log(log));
+  std::vector<std::string> left_out;
+  const std::vector<RunResults> once = read_results({file, result}, &left_out);
+  ASSERT_EQ(once.size(), 1u);
+  EXPECT_EQ(once[0].run.path, result);
+  EXPECT_EQ(once[0].run.generations.size(), 4u);
+  ASSERT_EQ(left_out.size(), 1u);
+  EXPECT_EQ(left_out[0], file + ": the same run as " + result + ", which holds 4 generations");
+  // Trials of one name in two milestones (another configuration) are two runs.
+  const std::string m3 =
+      std::string(ROBOZOO_SOURCE_DIR) + "/media/experiment/paper/m3/results/feedforward-s1.results.json";
+  EXPECT_EQ(read_results({kM2 + "/feedforward-s1.results.json", m3}).size(), 2u);
 }
 
 TEST(ResultRobots, ARunningExperimentsFolderOfLogsGivesEachTrialsChampionSoFar) {
