@@ -128,7 +128,11 @@ if [ "$action" = collect ]; then
     for f in "$dir/$folder"/*.results.json; do
       [ -e "$f" ] || continue
       mkdir -p "$paper/$folder"
-      cp "$f" "$paper/$folder/.tmp.$$" && mv "$paper/$folder/.tmp.$$" "$paper/$folder/$(basename "$f")"
+      if ! { cp "$f" "$paper/$folder/.tmp.$$" && mv "$paper/$folder/.tmp.$$" "$paper/$folder/$(basename "$f")"; }; then
+        echo "paper_experiment.sh: $name: could not copy $f into $paper/$folder" >&2
+        rm -f "$paper/$folder/.tmp.$$"
+        exit 1
+      fi
       n=$((n + 1))
     done
     [ "$n" -gt 0 ] || [ -d "$paper/$folder" ] || continue
@@ -142,7 +146,7 @@ if [ "$action" = collect ]; then
         echo "paper_experiment.sh: $name: $(tail -n 1 <<<"$check") ($continues's)"
       else
         echo "paper_experiment.sh: $name: its results do not repeat $continues's generations:" >&2
-        grep -v ' agree$' <<<"$check" >&2
+        grep -v ' agree$' <<<"$check" >&2 || true
         status=1
       fi
     fi
@@ -206,8 +210,11 @@ fixed_bin=$bin
 checkpoints_folder() { echo "$paper/${1%results}checkpoints"; }
 experiment_command() {  # runs folder, arms, generations, trials, results folder, sets: sets cmd
   cmd=("$bin/robozoo-experiment" --out "$dir/$1" --results "$dir/$5" --trials "$4" --population "$population"
-    --workers "$workers" --arms "$2" --generations "$3" ${steps:+--steps "$steps"}
-    --checkpoints "$(checkpoints_folder "$5")")
+    --workers "$workers" --arms "$2" --generations "$3" ${steps:+--steps "$steps"})
+  # M1 and M2's version predates portable checkpoints: its robozoo-experiment has no --checkpoints.
+  if "$bin/robozoo-experiment" --help 2>/dev/null | grep -q -- '--checkpoints'; then
+    cmd+=(--checkpoints "$(checkpoints_folder "$5")")
+  fi
   local kv
   if [ "$6" != - ]; then
     IFS=, read -r -a assignments <<<"$6"
@@ -234,6 +241,10 @@ if [ "$action" = save ]; then
     all_committed "$folder" "$arms" "$ntrials" && continue
     use_version "$version"
     experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
+    if ! "$bin/robozoo-experiment" --help 2>/dev/null | grep -q -- '--save-checkpoints'; then
+      echo "paper_experiment.sh: $name runs a robozoo version without portable checkpoints ($paper/$version): its trials in progress cannot be saved" >&2
+      exit 2
+    fi
     echo "paper_experiment.sh: $name: portable checkpoints of its trials in progress -> $(checkpoints_folder "$folder")"
     "${cmd[@]}" --save-checkpoints "$(checkpoints_folder "$folder")"
     exit $?

@@ -164,6 +164,41 @@ TEST(PaperExperimentCli, ANewMachineCountsCommittedResultsAndRepeatsTheRest) {
   }
 }
 
+TEST(PaperExperimentCli, AVersionWithoutPortableCheckpointsIsNotAskedForThem) {
+  // M1 and M2's pinned version predates --checkpoints and --save-checkpoints: stand-ins for its
+  // programs record how they are called.
+  TempDir t;
+  const std::string bin = t / "bin", calls = t / "calls.txt";
+  fs::create_directories(bin);
+  auto stub = [&](const std::string& name, const std::string& help) {
+    std::ofstream(bin + "/" + name) << "#!/bin/sh\n"
+                                    << "case \"$1\" in --help) echo '" << help
+                                    << "'; exit 0 ;; --version) echo old; exit 0 ;; esac\n"
+                                    << "echo \"$*\" >> '" << calls << "'\n";
+    fs::permissions(bin + "/" + name, fs::perms::owner_all);
+  };
+  stub("robozoo-evolve", "robozoo-evolve --log --resume");
+  stub("robozoo-experiment", "robozoo-experiment --out --results --trials --status");
+  const std::string base = "bash '" + std::string(ROBOZOO_SOURCE_DIR) +
+                           "/tools/experiment/paper_experiment.sh' --bin '" + bin + "' --paper '" + (t / "paper") +
+                           "' --dir '" + (t / "dir") + "' --trials 1 ";
+  const Outcome status = run_shell(base + "--status </dev/null");
+  EXPECT_EQ(status.status, 0) << status.output;
+  const std::string called = read_file(calls);
+  EXPECT_NE(called.find("--status"), std::string::npos) << called;
+  EXPECT_EQ(called.find("--checkpoints"), std::string::npos) << called;
+  const Outcome save = run_shell(base + "--save-checkpoints </dev/null");
+  EXPECT_EQ(save.status, 2) << save.output;
+  EXPECT_NE(save.output.find("M1 runs a robozoo version without portable checkpoints"), std::string::npos)
+      << save.output;
+  // This build's robozoo-experiment has them: they are passed.
+  stub("robozoo-experiment", "robozoo-experiment --out --checkpoints --save-checkpoints");
+  fs::remove(calls);
+  EXPECT_EQ(run_shell(base + "--status </dev/null").status, 0);
+  EXPECT_NE(read_file(calls).find("--checkpoints " + (t / "paper") + "/checkpoints"), std::string::npos)
+      << read_file(calls);
+}
+
 TEST(PaperExperimentCli, RefusesBadSizes) {
   TempDir t;
   const Outcome o =
