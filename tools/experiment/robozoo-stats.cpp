@@ -120,6 +120,8 @@ int main(int argc, char** argv) {
       s.experimental_arm = o.experimental_arm;
       if (app.count("--title") > 0) s.title = o.title;
       s.notes = o.notes;
+      s.plots = o.plots;
+      s.gnuplot = o.gnuplot;
       const SensitivityOutcome r = run_sensitivity(s, std::cerr);
       std::cerr << "robozoo-stats: " << r.analysis.factors.size() << " factors compared at generation "
                 << r.analysis.params.generation;

@@ -47,6 +47,12 @@ std::string wrap(const std::string& text, size_t width) {
 
 }  // namespace
 
+std::string gnuplot_number(double v) { return num(v); }
+
+std::string gnuplot_png_terminal(const std::string& png_path, const PlotStyle& style) {
+  return terminal(png_path, style);
+}
+
 std::string gnuplot_quote(const std::string& s) {
   std::string q = "\"";
   for (char c : s) {

@@ -38,6 +38,12 @@ std::string comparison_panels_script(const std::vector<Comparison>& comparisons,
 std::string outcome_shares_script(const std::vector<std::array<double, 6>>& shares, const std::string& png_path,
                                   const std::string& title, const PlotStyle& style = {});
 
+/// A number as a gnuplot datablock writes it (NaN, which gnuplot skips, when not finite).
+std::string gnuplot_number(double v);
+
+/// The lines that open every script: the pngcairo terminal of `style` writing `png_path`.
+std::string gnuplot_png_terminal(const std::string& png_path, const PlotStyle& style);
+
 /// Escapes a string for a double-quoted gnuplot string literal.
 std::string gnuplot_quote(const std::string& s);
 

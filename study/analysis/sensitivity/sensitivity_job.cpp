@@ -6,7 +6,9 @@
 
 #include "evolve/run/checkpoint.hpp"
 #include "study/analysis/figures/csv_writer.hpp"
+#include "study/analysis/figures/gnuplot_runner.hpp"
 #include "evolve/run/run_results.hpp"
+#include "study/analysis/sensitivity/sensitivity_plot.hpp"
 #include "study/analysis/sensitivity/sensitivity_report.hpp"
 #include "study/analysis/stats_job.hpp"
 #include "util/shell_word.hpp"
@@ -50,6 +52,7 @@ std::string command_of(const SensitivityOptions& o, int32_t generation) {
   if (o.control_arm != SensitivityOptions{}.control_arm || o.experimental_arm != SensitivityOptions{}.experimental_arm)
     c += " --compare " + o.control_arm + "," + o.experimental_arm;
   if (o.alpha != 0.05) c += " --alpha " + csv_number(o.alpha);
+  if (!o.plots) c += " --no-plots";
   if (!o.out_dir.empty()) c += " --out " + shell_word(o.out_dir);
   if (o.title != SensitivityOptions{}.title) c += " --title " + shell_word(o.title);
   for (const auto& note : o.notes) c += " --note " + shell_word(note);
@@ -93,14 +96,27 @@ SensitivityOutcome run_sensitivity(const SensitivityOptions& o, std::ostream& pr
   in.waiting = out.waiting;
   in.notes = o.notes;
   in.command = command_of(o, params.generation);
+  if (o.plots && !gnuplot_available(o.gnuplot))
+    throw std::runtime_error("cannot run " + o.gnuplot +
+                             " with the pngcairo terminal (install gnuplot-nox), or use --no-plots");
   fs::create_directories(out.out_dir);
+  if (o.plots) in.figure = "sensitivity.png";
   const std::pair<const char*, std::string> files[] = {
       {"sensitivity.csv", sensitivity_csv(in.analysis)},
       {"sensitivity_outcomes.csv", sensitivity_outcomes_csv(in.analysis)},
+      {"sensitivity.gp",
+       sensitivity_plot_script(in.analysis, "sensitivity.png",
+                               "The gap at generation record " + std::to_string(params.generation - 1) +
+                                   ", factor by factor, beside the reference's on the same seeds")},
       {"report.md", sensitivity_markdown(in)}};
   for (const auto& [name, text] : files) {
     write_file_atomic((fs::path(out.out_dir) / name).string(), text);
     out.files.push_back(name);
+  }
+  if (o.plots) {
+    // gnuplot runs in the output folder: the script names its PNG relatively.
+    run_gnuplot("sensitivity.gp", o.gnuplot, out.out_dir);
+    out.files.push_back("sensitivity.png");
   }
   out.analysis = std::move(in.analysis);
   return out;

@@ -3,7 +3,9 @@
 // compact results (DIR/<factor>/results/*.results.json; a factor folder without
 // any yet is listed as waiting) and the reference's (REFERENCE/*.results.json),
 // analyses them (sensitivity_analysis) and writes sensitivity.csv,
-// sensitivity_outcomes.csv and report.md (sensitivity_report) into the output folder.
+// sensitivity_outcomes.csv, report.md (sensitivity_report) and the figure,
+// sensitivity.gp and the sensitivity.png gnuplot draws from it (sensitivity_plot),
+// into the output folder.
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -22,7 +24,9 @@ struct SensitivityOptions {
   std::string control_arm = "feedforward";
   std::string experimental_arm = "recurrent";
   std::string title = "robozoo: the sensitivity study";
-  std::vector<std::string> notes;  ///< paragraphs for the top of the report
+  std::vector<std::string> notes;   ///< paragraphs for the top of the report
+  bool plots = true;                ///< run gnuplot for the figure
+  std::string gnuplot = "gnuplot";  ///< the gnuplot program
 };
 
 struct SensitivityOutcome {
@@ -34,7 +38,7 @@ struct SensitivityOutcome {
 
 /// Throws std::invalid_argument for a missing folder, no factor with results, runs of
 /// different lengths without a generation asked for, or any run the analysis refuses;
-/// std::runtime_error when a file cannot be written.
+/// std::runtime_error when a file cannot be written or gnuplot cannot run (with `plots`).
 SensitivityOutcome run_sensitivity(const SensitivityOptions& options, std::ostream& progress);
 
 }  // namespace robozoo

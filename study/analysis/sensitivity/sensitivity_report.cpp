@@ -186,6 +186,9 @@ std::string sensitivity_markdown(const SensitivityReportInputs& in) {
   }
   if (a.factors.empty()) md << "| (none yet) | | | | | | | | | |\n";
   md << "\n";
+  if (!in.figure.empty())
+    md << "![Each factor's gap (filled) with its " << level << " % interval, and the reference's on the same seeds "
+       << "(open) below it; the dashed line is no gap](" << in.figure << ")\n\n";
   for (const FactorResult& f : a.factors)
     md << "- " << f.name << ": seeds " << p.control_arm << " " << seeds_text(f.control_seeds) << "; "
        << p.experimental_arm << " " << seeds_text(f.experimental_seeds) << ".\n";

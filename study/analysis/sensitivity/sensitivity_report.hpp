@@ -6,7 +6,7 @@
 //                             the reading;
 //   sensitivity_outcomes.csv  one row per factor and arm (and the reference on the
 //                             factor's seeds): the generation's evaluations by outcome;
-//   report.md                 both as tables, with what was compared and how, the
+//   report.md                 both as tables (and the figure, sensitivity_plot), with what was compared and how, the
 //                             factors still without results, and the command that
 //                             makes the files again.
 #include <string>
@@ -23,6 +23,7 @@ struct SensitivityReportInputs {
   std::vector<std::string> waiting;  ///< factors in factors_dir without results yet
   std::vector<std::string> notes;    ///< paragraphs for the top of the report
   std::string command;               ///< the command that makes the files again
+  std::string figure;                ///< the figure's PNG in the report's folder (empty: none)
   SensitivityAnalysis analysis;
 };
 

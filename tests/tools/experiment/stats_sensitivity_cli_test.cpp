@@ -71,8 +71,14 @@ TEST(StatsSensitivityCli, ComparesAFactorWithTheReferenceAndMakesItsReportAgain)
   const auto again = run_shell(cd + bin("robozoo-stats") +
                                command.substr(std::string("build/bin/robozoo-stats").size()) + " --out again");
   ASSERT_EQ(again.status, 0) << again.output;
-  for (const std::string f : {"sensitivity.csv", "sensitivity_outcomes.csv"})
+  for (const std::string f : {"sensitivity.csv", "sensitivity_outcomes.csv", "sensitivity.gp"})
     EXPECT_EQ(read_file(t / ("again/" + f)), read_file(t / ("study/" + f))) << f;
+  // The figure: gnuplot drew it, and the report shows it.
+  const std::string png = read_file(t / "study/sensitivity.png");
+  ASSERT_GT(png.size(), 1000u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_NE(report.find("](sensitivity.png)"), std::string::npos) << report;
+  EXPECT_NE(r.output.find("sensitivity.gp report.md sensitivity.png"), std::string::npos) << r.output;
   // The reports differ only in the command (its --out).
   std::string made = read_file(t / "again/report.md");
   const std::string with_out =
