@@ -212,7 +212,8 @@ experiment_command() {  # runs folder, arms, generations, trials, results folder
   cmd=("$bin/robozoo-experiment" --out "$dir/$1" --results "$dir/$5" --trials "$4" --population "$population"
     --workers "$workers" --arms "$2" --generations "$3" ${steps:+--steps "$steps"})
   # M1 and M2's version predates portable checkpoints: its robozoo-experiment has no --checkpoints.
-  if "$bin/robozoo-experiment" --help 2>/dev/null | grep -q -- '--checkpoints'; then
+  # (Read whole, not piped to grep -q: grep's early exit would fail the pipe under pipefail.)
+  if [[ "$("$bin/robozoo-experiment" --help 2>/dev/null || true)" == *--checkpoints* ]]; then
     cmd+=(--checkpoints "$(checkpoints_folder "$5")")
   fi
   local kv
@@ -241,7 +242,7 @@ if [ "$action" = save ]; then
     all_committed "$folder" "$arms" "$ntrials" && continue
     use_version "$version"
     experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
-    if ! "$bin/robozoo-experiment" --help 2>/dev/null | grep -q -- '--save-checkpoints'; then
+    if [[ "$("$bin/robozoo-experiment" --help 2>/dev/null || true)" != *--save-checkpoints* ]]; then
       echo "paper_experiment.sh: $name runs a robozoo version without portable checkpoints ($paper/$version): its trials in progress cannot be saved" >&2
       exit 2
     fi
