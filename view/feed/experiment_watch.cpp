@@ -242,10 +242,6 @@ bool ExperimentWatch::poll_results() {
         changed |= unreadable_.emplace(p.string(), e.what()).second;
         continue;
       }
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        changed |= unreadable_.erase(p.string()) > 0;
-      }
       TrialProgress t;
       t.name = name;
       t.arm = r.run.arm;
@@ -261,6 +257,10 @@ bool ExperimentWatch::poll_results() {
                                                 std::to_string(t.planned))
                        .second;
         continue;
+      }
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        changed |= unreadable_.erase(p.string()) > 0;
       }
       const int32_t done = static_cast<int32_t>(t.best_so_far.size());
       t.state = t.planned > 0 && done >= t.planned ? "finished" : "stopped";

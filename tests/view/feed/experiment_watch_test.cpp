@@ -313,6 +313,7 @@ TEST(ExperimentWatch, AGenerationNumberBeyondTheRunIsDamageNotASize) {
   ASSERT_EQ(s["unreadable_results"].size(), 1u);
   EXPECT_NE(s["unreadable_results"][0].get<std::string>().find("recurrent-s6.results.json"), std::string::npos)
       << s["unreadable_results"];
+  EXPECT_FALSE(w.poll());  // listed once: not news again at every poll
 }
 
 TEST(ExperimentWatch, AFolderWithoutAnExperimentIsRefused) {
