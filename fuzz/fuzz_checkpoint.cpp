@@ -2,7 +2,7 @@
 // Anything wrong must be a std::runtime_error naming the file.
 #include <stdexcept>
 
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "fuzz/fuzz_check.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "fuzz/fuzz_check.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -19,7 +19,7 @@
 
 #include <toml++/toml.h>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"

@@ -10,7 +10,7 @@
 #include "evolve/config/config_docs.hpp"
 #include "evolve/config/run_config.hpp"
 #include "evolve/io/bus.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "evolve/run/evolution.hpp"
 #include "evolve/run/pool_evaluator.hpp"
 

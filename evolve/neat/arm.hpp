@@ -6,7 +6,7 @@
 // 99-link start) and "recurrent-zero" (the recurrent start's 209 links with its
 // 110 output -> output links at weight 0). Here, below the experiment
 // (study/experiment/trial_plan.hpp), because a compact result's reader
-// (run/run_summary.hpp) names the arm of the run it reads.
+// (record/run_summary.hpp) names the arm of the run it reads.
 #include <cstdint>
 #include <string>
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "robozoo/cppn_genome_t.hpp"
 #include "robozoo/generation_t.hpp"
 #include "robozoo/morphology_t.hpp"

@@ -16,8 +16,8 @@
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/neat/population.hpp"
-#include "evolve/run/checkpoint.hpp"
-#include "evolve/run/checkpoint_writer.hpp"
+#include "evolve/record/checkpoint.hpp"
+#include "evolve/record/checkpoint_writer.hpp"
 #include "evolve/run/evaluator.hpp"
 
 namespace robozoo {

@@ -13,7 +13,7 @@
 
 #include "render/scene/robot_card.hpp"
 #include "runlog/read/run_record.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 
 namespace robozoo::render {
 

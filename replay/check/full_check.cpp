@@ -13,7 +13,7 @@
 #include "evolve/io/log_compare.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "replay/log/logged_config.hpp"
 #include "replay/compare/message_diff.hpp"
 #include "runlog/read/log_index.hpp"

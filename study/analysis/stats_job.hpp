@@ -9,7 +9,7 @@
 
 #include "study/analysis/compare/experiment_analysis.hpp"
 #include "study/analysis/measure/run_analysis.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 
 namespace robozoo {
 

@@ -2,8 +2,8 @@
 // A portable checkpoint: a trial in progress, small enough to commit, so that
 // another machine continues it without its log (20-40 MB a trial, which barely
 // compresses). It holds robozoo-evolve's checkpoint of the trial after
-// generation k - 1 (evolve/run/checkpoint.hpp) and the trial's compact result
-// of generations 0..k-1 (evolve/run/run_results.hpp), both
+// generation k - 1 (evolve/record/checkpoint.hpp) and the trial's compact result
+// of generations 0..k-1 (evolve/record/run_results.hpp), both
 // compressed (zstd), in one file, <trial>.portable-checkpoint.
 //
 // Format (version 1), integers little-endian, a 60-byte header then the payload:
@@ -36,8 +36,8 @@
 #include <string>
 #include <vector>
 
-#include "evolve/run/checkpoint.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/checkpoint.hpp"
+#include "evolve/record/run_results.hpp"
 #include "study/experiment/trial_plan.hpp"
 
 namespace robozoo {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "evolve/config/run_config.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 
 namespace robozoo {
 

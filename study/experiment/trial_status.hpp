@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "study/experiment/trial_plan.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 
 namespace robozoo {
 

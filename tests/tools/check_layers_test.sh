@@ -20,9 +20,9 @@ make_tree() {
   cd "$tmp/tree"
   mkdir -p util evolve/app evolve/io runlog/read study/analysis render replay view tools/log tests/evolve fuzz
   printf '#include "util/exit_status.hpp"\n#include <string>\n' >util/a.cpp
-  printf '#include "evolve/run/run_results.hpp"\n#include "util/exit_status.hpp"\n#include "robozoo/run_t.hpp"\n#include <CLI/CLI.hpp>\n// #include "study/analysis/x.hpp" (a comment)\n' >evolve/app/champion_command.cpp
+  printf '#include "evolve/record/run_results.hpp"\n#include "util/exit_status.hpp"\n#include "robozoo/run_t.hpp"\n#include <CLI/CLI.hpp>\n// #include "study/analysis/x.hpp" (a comment)\n' >evolve/app/champion_command.cpp
   printf '#include "evolve/io/event_log.hpp"\n' >runlog/read/log_reader.cpp
-  printf '#include "runlog/read/log_reader.hpp"\n#include <evolve/run/run_summary.hpp>\n' >study/analysis/b.cpp
+  printf '#include "runlog/read/log_reader.hpp"\n#include <evolve/record/run_summary.hpp>\n' >study/analysis/b.cpp
   printf '#include "runlog/read/log_reader.hpp"\n#include "study/analysis/b.hpp"\n' >render/c.hpp
   printf '#include "runlog/read/log_reader.hpp"\n' >replay/d.h
   printf '#include "study/analysis/b.hpp"\n#include "render/c.hpp"\n' >view/e.cpp

@@ -5,7 +5,7 @@
 // and started again at any time: finished trials are skipped, a stopped one is
 // resumed from its checkpoint, the others are started; --generations above the
 // trials' own extends them from their checkpoints. Each finished trial leaves its
-// compact result (evolve/run/run_results.hpp) in --results. Trials in
+// compact result (evolve/record/run_results.hpp) in --results. Trials in
 // progress travel to another machine as portable checkpoints
 // (study/experiment/portable_checkpoint.hpp): --save-checkpoints DIR writes them,
 // --checkpoints DIR continues from them. Prints progress across the whole
@@ -25,9 +25,9 @@
 
 #include "evolve/config/run_config.hpp"
 #include "evolve/core/version.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "study/analysis/read/continued_results.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "study/experiment/child_process.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 #include "study/experiment/progress_estimate.hpp"

@@ -28,7 +28,7 @@
 #include "evolve/fitness/evaluate.hpp"
 #include "evolve/growth/growth.hpp"
 #include "evolve/neat/start/random_genome.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "evolve/sim/episode/simulation.hpp"
 #include "evolve/core/version.hpp"
 #include "util/parse_options.hpp"

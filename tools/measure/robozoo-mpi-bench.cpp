@@ -39,7 +39,7 @@
 #include "evolve/parallel/mpi/mpi_transport.hpp"
 #include "evolve/parallel/mpi/mpi_worker.hpp"
 #include "evolve/parallel/scaling_model.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "evolve/run/evolution.hpp"
 #include "evolve/run/pool_evaluator.hpp"
 #include "evolve/core/version.hpp"

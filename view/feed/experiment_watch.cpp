@@ -17,7 +17,7 @@
 #include "robozoo/generation_t.hpp"
 #include "robozoo/run_t.hpp"
 #include "runlog/read/log_reader.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "study/analysis/read/continued_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "runlog/read/champion_record.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 #include "view/replays/export.hpp"

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "evolve/run/champion_log.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "runlog/robots/leaf_spheres.hpp"
 #include "study/analysis/read/continued_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "evolve/run/run_summary.hpp"
+#include "evolve/record/run_summary.hpp"
 #include "study/analysis/measure/topology.hpp"
 
 namespace robozoo {

@@ -11,7 +11,7 @@
 #include "study/analysis/measure/champion_changes.hpp"
 #include "study/analysis/measure/genotype_stats.hpp"
 #include "study/analysis/measure/morphology_stats.hpp"
-#include "evolve/run/run_summary.hpp"
+#include "evolve/record/run_summary.hpp"
 
 namespace robozoo {
 

@@ -14,8 +14,8 @@
 // counts the time before the move too).
 #include <string>
 
-#include "evolve/run/checkpoint.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/checkpoint.hpp"
+#include "evolve/record/run_results.hpp"
 
 namespace robozoo {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "runlog/read/log_reader.hpp"
 
 namespace robozoo {

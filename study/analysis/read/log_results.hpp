@@ -1,11 +1,11 @@
 #pragma once
 // A run's log read into its summary and its compact results (the formats are
-// evolve/run/run_summary.hpp and evolve/run/run_results.hpp); the log is read with
+// evolve/record/run_summary.hpp and evolve/record/run_results.hpp); the log is read with
 // runlog/, the one reader of logs.
 #include <string>
 
-#include "evolve/run/run_results.hpp"
-#include "evolve/run/run_summary.hpp"
+#include "evolve/record/run_results.hpp"
+#include "evolve/record/run_summary.hpp"
 
 namespace robozoo {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 
 namespace robozoo {
 

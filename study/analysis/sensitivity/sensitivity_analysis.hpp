@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "study/analysis/compare/mean_gap.hpp"
-#include "evolve/run/run_summary.hpp"
+#include "evolve/record/run_summary.hpp"
 #include "study/analysis/sensitivity/config_difference.hpp"
 
 namespace robozoo {

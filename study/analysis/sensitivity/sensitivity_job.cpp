@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "study/analysis/figures/csv_writer.hpp"
 #include "study/analysis/figures/gnuplot_runner.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "study/analysis/sensitivity/sensitivity_plot.hpp"
 #include "study/analysis/sensitivity/sensitivity_report.hpp"
 #include "study/analysis/stats_job.hpp"

@@ -7,7 +7,7 @@
 
 #include <fstream>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"

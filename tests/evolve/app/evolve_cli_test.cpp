@@ -11,7 +11,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
 #include "evolve/neat/population.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "tests/support/evolve_runs.hpp"
 
 namespace robozoo {

@@ -8,7 +8,7 @@
 #include "evolve/io/log_compare.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/safe_decode.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "tests/support/evolve_runs.hpp"
 
 namespace robozoo {

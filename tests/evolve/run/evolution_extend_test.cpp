@@ -10,7 +10,7 @@
 
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "tests/support/extended_run.hpp"
 #include "tests/support/small_run.hpp"

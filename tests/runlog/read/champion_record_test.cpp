@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 
 namespace robozoo {
 namespace {

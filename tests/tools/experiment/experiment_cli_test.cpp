@@ -7,7 +7,7 @@
 
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"
 

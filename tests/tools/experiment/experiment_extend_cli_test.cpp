@@ -10,10 +10,10 @@
 
 #include <filesystem>
 
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "evolve/io/event_log.hpp"
 #include "evolve/io/log_compare.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "tests/support/evolve_runs.hpp"
 #include "tests/support/extended_run.hpp"
 #include "tests/support/subprocess.hpp"

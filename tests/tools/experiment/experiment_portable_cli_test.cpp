@@ -16,7 +16,7 @@
 #include "evolve/messages/build.hpp"
 #include "evolve/messages/log_continuation.hpp"
 #include "evolve/messages/safe_decode.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
 #include "study/experiment/portable_checkpoint.hpp"

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 #include "tests/support/mpirun.hpp"
 #include "tests/support/evolve_runs.hpp"
 #include "tests/support/subprocess.hpp"

@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "evolve/io/event_log.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "tests/render/messages.hpp"
 #include "tests/support/subprocess.hpp"
 #include "view/feed/experiment_watch.hpp"

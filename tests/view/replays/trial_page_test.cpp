@@ -11,7 +11,7 @@
 
 #include "evolve/run/evaluator.hpp"
 #include "evolve/run/evolution.hpp"
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 #include "study/analysis/read/log_results.hpp"
 #include "study/experiment/portable_checkpoint.hpp"
 #include "tests/support/small_run.hpp"

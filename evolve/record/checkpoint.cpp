@@ -1,4 +1,4 @@
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 
 #include "evolve/core/json_fields.hpp"
 

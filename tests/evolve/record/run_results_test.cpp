@@ -1,7 +1,7 @@
 // Compact results: a real run's log, reduced and written, reads back to the
 // same analysis for every analysis option; bad files are refused naming the
 // file and the field.
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>

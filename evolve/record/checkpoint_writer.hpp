@@ -14,7 +14,7 @@
 #include <string>
 #include <thread>
 
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 
 namespace robozoo {
 

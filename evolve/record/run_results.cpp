@@ -1,4 +1,4 @@
-#include "evolve/run/run_results.hpp"
+#include "evolve/record/run_results.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -13,7 +13,7 @@
 #include "evolve/cppn/genome.hpp"
 #include "evolve/messages/build.hpp"
 #include "evolve/neat/population_json.hpp"
-#include "evolve/run/checkpoint.hpp"
+#include "evolve/record/checkpoint.hpp"
 
 namespace robozoo {
 

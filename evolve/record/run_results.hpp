@@ -32,7 +32,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evolve/run/run_summary.hpp"
+#include "evolve/record/run_summary.hpp"
 
 namespace robozoo {
 

@@ -1,4 +1,4 @@
-#include "evolve/run/checkpoint_writer.hpp"
+#include "evolve/record/checkpoint_writer.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

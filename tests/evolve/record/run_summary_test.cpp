@@ -1,4 +1,4 @@
-#include "evolve/run/run_summary.hpp"
+#include "evolve/record/run_summary.hpp"
 
 #include <gtest/gtest.h>
 
