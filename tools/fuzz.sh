@@ -30,7 +30,7 @@ if ! [[ "$SECONDS_EACH" =~ ^[0-9]+$ ]]; then
   echo "fuzz.sh: SECONDS must be a whole number of seconds, not '$SECONDS_EACH'" >&2; exit 2
 fi
 for t in "${targets[@]}"; do
-  [ -f "fuzz/$t.cpp" ] || { echo "fuzz.sh: no fuzz target $t (fuzz/fuzz_*.cpp)" >&2; exit 2; }
+  compgen -G "fuzz/*/$t.cpp" >/dev/null || { echo "fuzz.sh: no fuzz target $t (fuzz/*/fuzz_*.cpp)" >&2; exit 2; }
 done
 FUZZ_DIR="${FUZZ_BUILD_DIR:-build-fuzz}"
 BUILD_DIR="${BUILD_DIR:-build}"
@@ -66,7 +66,7 @@ if [ ! -f "$seeds/.done" ]; then
 fi
 
 if [ ${#targets[@]} -eq 0 ]; then
-  for f in fuzz/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done
+  for f in fuzz/*/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done
 fi
 
 failed=0

@@ -147,7 +147,7 @@ std::string text_error(const std::string& text, ConfigFormat format) {
 }
 
 // TOML has nan and inf literals, and JSON numbers can overflow a double: no
-// non-finite value may reach the configuration (checked by fuzz/fuzz_config_*).
+// non-finite value may reach the configuration (checked by fuzz/files/fuzz_config_*).
 TEST(RunConfig, NanAndInfinityAreRefusedNamingTheKey) {
   for (const char* v : {"nan", "+nan", "-nan", "inf", "+inf", "-inf"}) {
     const std::string e = text_error(std::string("[sim]\ndt = ") + v + "\n", ConfigFormat::Toml);

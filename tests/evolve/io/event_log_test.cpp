@@ -165,7 +165,7 @@ LogContents parse(const std::vector<uint8_t>& b) { return parse_event_log(b.data
 // length of 2^31 - 1 made it allocate datalen + 1 bytes (a signed overflow),
 // fail, and read into a null pointer (SIGSEGV); a length of 10^9 made it
 // allocate 1 GB for a small file (SIGSEGV under a 500 MB address-space limit).
-// Lengths are now checked against the bytes left first (fuzz/fuzz_event_log).
+// Lengths are now checked against the bytes left first (fuzz/files/fuzz_event_log).
 TEST(EventLog, AbsurdLengthsAreACutEventNotAnAllocation) {
   const auto first = event(0, "A", bytes(10, 1));
   for (int32_t datalen : {std::numeric_limits<int32_t>::max(), 1000000000, 1 << 20, 11}) {

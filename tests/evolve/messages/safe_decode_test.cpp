@@ -126,7 +126,7 @@ TEST(SafeDecode, RandomGarbageNeverDecodesOrThrows) {
   }
 }
 
-// Found by fuzz/fuzz_run_t: LCM's decoder accepts a string with a zero byte
+// Found by fuzz/messages/fuzz_run_t: LCM's decoder accepts a string with a zero byte
 // inside (or without its terminator), and its encoder then cuts the string at
 // the first zero, so the message did not re-encode to itself and two logs
 // whose config_json differed after such a byte compared equal.
