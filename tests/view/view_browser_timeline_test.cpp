@@ -169,7 +169,9 @@ class ViewTimeline : public ::testing::Test {
   /// A tab on `fragment` of the page, once it shows a champion whose samples are all there.
   std::string open(const std::string& fragment = "", int64_t robot = kChampions[2]) {
     // One tab at a time: a tab left behind is hidden, and a hidden tab draws no frames.
-    for (const auto& t : browser_->call("Target.getTargets", nlohmann::json::object())["targetInfos"])
+    // The reply is kept: a range-for over a member of the temporary reply would read freed memory.
+    const nlohmann::json targets = browser_->call("Target.getTargets", nlohmann::json::object());
+    for (const auto& t : targets["targetInfos"])
       if (t["type"] == "page") browser_->call("Target.closeTarget", {{"targetId", t["targetId"]}});
     const std::string tab = browser_->open(page_ + fragment);
     EXPECT_TRUE(wait_for(
