@@ -4,9 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <malloc.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
 #include "tests/render/decode_video.hpp"
 #include "tests/support/subprocess.hpp"
@@ -119,17 +123,71 @@ TEST(VideoEncoder, DefaultBytesAreTheRecordedOnes) {
   EXPECT_EQ(fnv1a(bytes), kRecordedDefaultHash);
 }
 
-// The same frames give the same bytes whatever the heap held before: glibc's
-// M_PERTURB fills every freed and every new block with a pattern, so an encoder
-// that read memory it never wrote would give other bytes under each pattern.
-TEST(VideoEncoder, SameBytesWhateverTheHeapHeld) {
-  TempDir dir;
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+/// Set in the copy of this test that SameBytesWhateverTheHeapHeld starts under AddressSanitizer:
+/// the file to encode the gradients into.
+constexpr const char* kHeapPatternOut = "ROBOZOO_TEST_HEAP_PATTERN_OUT";
+
+EncoderOptions small_video() {
   EncoderOptions o;
   o.width = 64;
   o.height = 48;
+  return o;
+}
+
+/// Encodes the gradients into `path` with every new heap block filled with `pattern` first.
+/// glibc's malloc does it in this process (M_PERTURB, which also fills freed blocks).
+/// AddressSanitizer's malloc ignores mallopt and fills new blocks with its own byte, set when
+/// a process starts (ASAN_OPTIONS malloc_fill_byte): there this test runs again in a new
+/// process for each pattern.
+std::string encode_with_heap_pattern(const std::string& path, int pattern) {
+  if (!kAddressSanitizer) {
+    if (mallopt(M_PERTURB, pattern) != 1) throw std::runtime_error("glibc refused mallopt(M_PERTURB)");
+    const std::string bytes = encode_gradients(path, small_video(), 12);
+    mallopt(M_PERTURB, 0);
+    return bytes;
+  }
+  const char* given = std::getenv("ASAN_OPTIONS");
+  const std::string options = (given && *given ? std::string(given) + ":" : std::string()) +
+                              "malloc_fill_byte=" + std::to_string(pattern) + ":max_malloc_fill_size=1073741824";
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    setenv("ASAN_OPTIONS", options.c_str(), 1);
+    setenv(kHeapPatternOut, path.c_str(), 1);
+    execl("/proc/self/exe", "/proc/self/exe", "--gtest_filter=VideoEncoder.SameBytesWhateverTheHeapHeld",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("the test's copy with heap pattern " + std::to_string(pattern) + " failed (status " +
+                             std::to_string(status) + ")");
+  return bytes_of(path);
+}
+
+// The same frames give the same bytes whatever the heap held before: every new
+// block is filled with a pattern first (encode_with_heap_pattern), so an encoder
+// that read memory it never wrote would give other bytes under each pattern.
+TEST(VideoEncoder, SameBytesWhateverTheHeapHeld) {
+  if (const char* out = std::getenv(kHeapPatternOut)) {  // the copy started under AddressSanitizer
+    encode_gradients(out, small_video(), 12);
+    return;
+  }
+  TempDir dir;
   for (int pattern : {165, 17, 0}) {
-    ASSERT_EQ(mallopt(M_PERTURB, pattern), 1);
-    const std::string bytes = encode_gradients(dir / ("p" + std::to_string(pattern) + ".mp4"), o, 12);
+    const std::string bytes = encode_with_heap_pattern(dir / ("p" + std::to_string(pattern) + ".mp4"), pattern);
     EXPECT_EQ(bytes.size(), kRecordedDefaultSize) << "heap pattern " << pattern;
     EXPECT_EQ(fnv1a(bytes), kRecordedDefaultHash) << "heap pattern " << pattern;
   }
