@@ -47,9 +47,6 @@ uint32_t crc_of(const uint8_t* p, size_t n) {
 /// A checkpoint's text compresses about 12:1 (its genomes' weights are random
 /// doubles); more than this claimed is damage, refused before allocating.
 constexpr uint64_t kMaxRatio = 1000;
-/// zstd's level: about a third smaller than zlib's best on a checkpoint, and
-/// well under a second for a population-150 trial's.
-constexpr int kZstdLevel = 19;
 
 /// The configuration without the generations requested (an extended run raises them).
 nlohmann::json without_generations(nlohmann::json config) {
@@ -101,11 +98,11 @@ PortableCheckpoint pack_portable_checkpoint(const std::string& log_path) {
   return p;
 }
 
-std::vector<uint8_t> encode_portable_checkpoint(const PortableCheckpoint& p) {
+std::vector<uint8_t> encode_portable_checkpoint(const PortableCheckpoint& p, int zstd_level) {
   const std::string payload = p.checkpoint_text + p.results_text;
   std::vector<uint8_t> out(kPortableHeaderBytes + ZSTD_compressBound(payload.size()));
   const size_t bound = ZSTD_compress(out.data() + kPortableHeaderBytes, out.size() - kPortableHeaderBytes,
-                                     payload.data(), payload.size(), kZstdLevel);
+                                     payload.data(), payload.size(), zstd_level);
   if (ZSTD_isError(bound))
     throw std::runtime_error("portable checkpoint: zstd could not compress " + std::to_string(payload.size()) +
                              " bytes: " + ZSTD_getErrorName(bound));

@@ -68,6 +68,12 @@ TEST(PortableCheckpoint, ReadsBackWhatItHolds) {
   EXPECT_EQ(q.checkpoint.rng_state, p.checkpoint.rng_state);
   // Smaller than its texts.
   EXPECT_LT(bytes.size(), p.checkpoint_text.size() + p.results_text.size());
+  // Another zstd level: other bytes, larger, the same texts back.
+  const std::vector<uint8_t> quick = encode_portable_checkpoint(p, 1);
+  EXPECT_GT(quick.size(), bytes.size());
+  const PortableCheckpoint r = decode_portable_checkpoint(quick.data(), quick.size(), "f");
+  EXPECT_EQ(r.checkpoint_text, p.checkpoint_text);
+  EXPECT_EQ(r.results_text, p.results_text);
 
   // Unpacked beside a new log path: the checkpoint says the log begins at generation 2.
   unpack_portable_checkpoint(q, dir / "new/r.lcmlog");
