@@ -119,10 +119,16 @@ std::vector<uint8_t> encode_portable_checkpoint(const PortableCheckpoint& p, int
   return out;
 }
 
-PortableCheckpoint decode_portable_checkpoint(const uint8_t* data, size_t size, const std::string& path) {
-  auto refuse = [&path](const std::string& why) -> void {
-    throw std::invalid_argument(path + ": not a usable portable checkpoint: " + why);
-  };
+namespace {
+
+[[noreturn]] void refuse_portable(const std::string& path, const std::string& why) {
+  throw std::invalid_argument(path + ": not a usable portable checkpoint: " + why);
+}
+
+}  // namespace
+
+PortableTexts unpack_portable_texts(const uint8_t* data, size_t size, const std::string& path) {
+  auto refuse = [&path](const std::string& why) { refuse_portable(path, why); };
   if (size < kPortableHeaderBytes || std::memcmp(data, kPortableCheckpointTag, 16) != 0)
     refuse("no \"robozoo-portable\" format tag (" + std::to_string(size) + " bytes)");
   const uint32_t version = get_u32(data + 16);
@@ -152,9 +158,14 @@ PortableCheckpoint decode_portable_checkpoint(const uint8_t* data, size_t size, 
     refuse("zstd cannot decompress it to the " + std::to_string(total) + " bytes its header says");
   if (get_u32(data + 48) != crc_of(reinterpret_cast<const uint8_t*>(payload.data()), payload.size()))
     refuse("its decompressed texts are damaged (CRC-32)");
+  return PortableTexts{payload.substr(0, checkpoint_bytes), payload.substr(checkpoint_bytes)};
+}
+
+PortableCheckpoint decode_portable_checkpoint(const uint8_t* data, size_t size, const std::string& path) {
+  PortableTexts texts = unpack_portable_texts(data, size, path);
   PortableCheckpoint p;
-  p.checkpoint_text = payload.substr(0, checkpoint_bytes);
-  p.results_text = payload.substr(checkpoint_bytes);
+  p.checkpoint_text = std::move(texts.checkpoint);
+  p.results_text = std::move(texts.results);
   try {
     p.checkpoint = checkpoint_from_text(p.checkpoint_text, "checkpoint");
     p.earlier = run_results_from_text(p.results_text, "compact result");
@@ -162,7 +173,7 @@ PortableCheckpoint decode_portable_checkpoint(const uint8_t* data, size_t size, 
     if (p.generation < 1) throw std::invalid_argument("the checkpoint holds no finished generation");
     check_results_match(p.checkpoint, p.earlier, p.generation);
   } catch (const std::exception& e) {
-    refuse(e.what());
+    refuse_portable(path, e.what());
   }
   return p;
 }

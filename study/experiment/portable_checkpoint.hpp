@@ -73,6 +73,14 @@ inline constexpr int kPortableZstdLevel = 19;
 /// The file's bytes, the texts compressed at zstd level `zstd_level` (1-22; a file of any level
 /// reads back the same; a lower one is quicker and larger, as the fuzz target's mutator wants).
 std::vector<uint8_t> encode_portable_checkpoint(const PortableCheckpoint& p, int zstd_level = kPortableZstdLevel);
+/// The two texts the bytes hold, the checkpoint's and the compact result's, once the header, the
+/// sizes, the CRC-32s and the zstd frame are checked (the texts themselves are not read);
+/// throws std::invalid_argument starting with `path`.
+struct PortableTexts {
+  std::string checkpoint;
+  std::string results;
+};
+PortableTexts unpack_portable_texts(const uint8_t* data, size_t size, const std::string& path);
 /// Checks everything the format says; throws std::invalid_argument starting with `path`.
 PortableCheckpoint decode_portable_checkpoint(const uint8_t* data, size_t size, const std::string& path);
 

@@ -68,6 +68,10 @@ TEST(PortableCheckpoint, ReadsBackWhatItHolds) {
   EXPECT_EQ(q.checkpoint.rng_state, p.checkpoint.rng_state);
   // Smaller than its texts.
   EXPECT_LT(bytes.size(), p.checkpoint_text.size() + p.results_text.size());
+  // The texts alone, unparsed: the same.
+  const PortableTexts texts = unpack_portable_texts(bytes.data(), bytes.size(), "f");
+  EXPECT_EQ(texts.checkpoint, p.checkpoint_text);
+  EXPECT_EQ(texts.results, p.results_text);
   // Another zstd level: other bytes, larger, the same texts back.
   const std::vector<uint8_t> quick = encode_portable_checkpoint(p, 1);
   EXPECT_GT(quick.size(), bytes.size());
