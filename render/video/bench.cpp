@@ -11,7 +11,7 @@
 #include "evolve/core/wall_time.hpp"
 #include "runlog/read/log_source.hpp"
 #include "runlog/robots/selection.hpp"
-#include "render/video/video_quality.hpp"
+#include "render/codec/video_quality.hpp"
 #include "render/video/video_subject.hpp"
 
 namespace robozoo::render {

@@ -14,7 +14,7 @@
 #include "render/scene/stage.hpp"
 #include "render/gl/text.hpp"
 #include "runlog/robots/trajectory.hpp"
-#include "render/video/video_encoder.hpp"
+#include "render/codec/video_encoder.hpp"
 
 namespace robozoo::render {
 

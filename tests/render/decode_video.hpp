@@ -11,7 +11,7 @@ extern "C" {
 #include <string>
 #include <vector>
 
-#include "render/video/video_decoder.hpp"
+#include "render/codec/video_decoder.hpp"
 
 namespace robozoo::render::testing {
 

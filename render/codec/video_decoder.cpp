@@ -1,4 +1,4 @@
-#include "render/video/video_decoder.hpp"
+#include "render/codec/video_decoder.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>

@@ -1,6 +1,6 @@
-#include "render/video/video_quality.hpp"
+#include "render/codec/video_quality.hpp"
 
-#include "render/video/video_decoder.hpp"
+#include "render/codec/video_decoder.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>

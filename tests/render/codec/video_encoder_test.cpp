@@ -1,4 +1,4 @@
-#include "render/video/video_encoder.hpp"
+#include "render/codec/video_encoder.hpp"
 
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "render/video/video_encoder.hpp"
+#include "render/codec/video_encoder.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>

@@ -1,4 +1,4 @@
-#include "render/video/video_quality.hpp"
+#include "render/codec/video_quality.hpp"
 
 #include <fcntl.h>  // tests/support/subprocess.hpp uses open()
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "render/video/video_encoder.hpp"
+#include "render/codec/video_encoder.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo::render {
