@@ -51,7 +51,9 @@
 # committed) into the repository beside its compact results (checkpoints/ for M1,
 # m3/checkpoints/, sensitivity/<factor>/checkpoints/, ...; 130-280 kB a trial) and removes
 # those of finished trials, in every milestone: commit them, and the run on a fresh clone
-# continues those trials from there instead of generation 0.
+# continues those trials from there instead of generation 0. A later milestone that continues
+# one finished here (M3-100 M3's) or the one being run gets the portable checkpoints of the
+# trials that one finished, in its own checkpoints/ (m3/g100/checkpoints/, ...).
 # DIR defaults to /var/tmp/robozoo-paper.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -80,7 +82,7 @@ while [ $# -gt 0 ]; do
     --collect) action=collect; shift ;;
     --status) action=status; shift ;;
     --save-checkpoints) action=save; shift ;;
-    -h|--help) sed -n '2,55p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,/^# DIR defaults/p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "paper_experiment.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -236,22 +238,55 @@ if [ "$action" = save ]; then
       fi
     done
   done
-  for m in "${milestones[@]}"; do
-    read -r name version runs arms gens ntrials folder sets _ <<<"$m"
-    [ -e "$dir/$name.done" ] && continue
-    all_committed "$folder" "$arms" "$ntrials" && continue
+  save_milestone() {  # milestone line: writes the portable checkpoints of its trials in progress here
+    local name version runs arms gens ntrials folder sets
+    read -r name version runs arms gens ntrials folder sets _ <<<"$1"
     use_version "$version"
     experiment_command "$runs" "$arms" "$gens" "$ntrials" "$folder" "$sets"
     if [[ "$("$bin/robozoo-experiment" --help 2>/dev/null || true)" != *--save-checkpoints* ]]; then
       echo "paper_experiment.sh: $name runs a robozoo version without portable checkpoints ($paper/$version): its trials in progress cannot be saved" >&2
       exit 2
     fi
-    echo "paper_experiment.sh: $name: portable checkpoints of its trials in progress -> $(checkpoints_folder "$folder")"
     "${cmd[@]}" --save-checkpoints "$(checkpoints_folder "$folder")"
-    exit $?
+  }
+  # The milestone being run: the first not finished here whose results are not all committed.
+  active=""
+  status=0
+  for m in "${milestones[@]}"; do
+    read -r name _ _ arms _ ntrials folder _ _ <<<"$m"
+    [ -e "$dir/$name.done" ] && continue
+    all_committed "$folder" "$arms" "$ntrials" && continue
+    active=$name
+    echo "paper_experiment.sh: $name: portable checkpoints of its trials in progress -> $(checkpoints_folder "$folder")"
+    save_milestone "$m" || status=$?
+    break
   done
-  echo "paper_experiment.sh: every milestone finished on this machine: no trial in progress"
-  exit 0
+  # A later milestone that continues one finished here, or the one being run, continues the
+  # trials that one finished from their logs here: they travel too, in the later milestone's
+  # checkpoints/ (a new machine has neither those logs nor the trials in it otherwise, and would
+  # run them again from generation 0). A trial still running in the milestone being run travels
+  # in that milestone's checkpoints/ only.
+  for m in "${milestones[@]}"; do
+    read -r name _ _ arms _ ntrials folder _ continues <<<"$m"
+    [ "$continues" != - ] && [ "$name" != "$active" ] || continue
+    [ -e "$dir/$name.done" ] && continue
+    all_committed "$folder" "$arms" "$ntrials" && continue
+    [ -e "$dir/$continues.done" ] || [ "$continues" = "$active" ] || continue
+    echo "paper_experiment.sh: $name: portable checkpoints of the trials $continues finished here -> $(checkpoints_folder "$folder")"
+    save_milestone "$m" || status=$?
+    [ "$continues" = "$active" ] || continue
+    prev_folder=$(folder_of "$continues")
+    for f in "$(checkpoints_folder "$folder")"/*.portable-checkpoint; do
+      [ -e "$f" ] || continue
+      trial=$(basename "$f" .portable-checkpoint)
+      if [ ! -e "$paper/$prev_folder/$trial.results.json" ] && [ ! -e "$dir/$prev_folder/$trial.results.json" ]; then
+        rm -f "$f"
+        echo "paper_experiment.sh: $name: $trial is still running in $continues: removed $f"
+      fi
+    done
+  done
+  [ -n "$active" ] || echo "paper_experiment.sh: every milestone finished on this machine: no trial in progress"
+  exit $status
 fi
 if [ "$action" = status ]; then
   for m in "${milestones[@]}"; do
