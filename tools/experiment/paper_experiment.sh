@@ -50,7 +50,8 @@
 # milestone being run (the first without DIR/<name>.done whose results are not all
 # committed) into the repository beside its compact results (checkpoints/ for M1,
 # m3/checkpoints/, sensitivity/<factor>/checkpoints/, ...; 130-280 kB a trial) and removes
-# those of finished trials, in every milestone: commit them, and the run on a fresh clone
+# those of finished trials, in every milestone, copying their compact results into the
+# repository as --collect does (without its checks): commit them, and the run on a fresh clone
 # continues those trials from there instead of generation 0. A later milestone that continues
 # one finished here (M3-100 M3's) or the one being run gets the portable checkpoints of the
 # trials that one finished, in its own checkpoints/ (m3/g100/checkpoints/, ...).
@@ -119,6 +120,27 @@ folder_of() {  # milestone name -> its results folder
   return 1
 }
 
+# Copies a milestone's compact results from DIR into the repository (name, results folder):
+# n counts them, copied those that were not there as they are.
+copy_results() {
+  local f target
+  n=0
+  copied=0
+  for f in "$dir/$2"/*.results.json; do
+    [ -e "$f" ] || continue
+    n=$((n + 1))
+    target="$paper/$2/$(basename "$f")"
+    cmp -s "$f" "$target" && continue
+    mkdir -p "$paper/$2"
+    if ! { cp "$f" "$paper/$2/.tmp.$$" && mv "$paper/$2/.tmp.$$" "$target"; }; then
+      echo "paper_experiment.sh: $1: could not copy $f into $paper/$2" >&2
+      rm -f "$paper/$2/.tmp.$$"
+      exit 1
+    fi
+    copied=$((copied + 1))
+  done
+}
+
 if [ "$action" = collect ]; then
   # A continued milestone's trials must repeat the one they continue (runs are
   # deterministic): robozoo-stats --same-as checks it, with this checkout's build.
@@ -126,17 +148,7 @@ if [ "$action" = collect ]; then
   status=0
   for m in "${milestones[@]}"; do
     read -r name _ _ _ _ _ folder _ continues <<<"$m"
-    n=0
-    for f in "$dir/$folder"/*.results.json; do
-      [ -e "$f" ] || continue
-      mkdir -p "$paper/$folder"
-      if ! { cp "$f" "$paper/$folder/.tmp.$$" && mv "$paper/$folder/.tmp.$$" "$paper/$folder/$(basename "$f")"; }; then
-        echo "paper_experiment.sh: $name: could not copy $f into $paper/$folder" >&2
-        rm -f "$paper/$folder/.tmp.$$"
-        exit 1
-      fi
-      n=$((n + 1))
-    done
+    copy_results "$name" "$folder"
     [ "$n" -gt 0 ] || [ -d "$paper/$folder" ] || continue
     echo "paper_experiment.sh: $name: $n compact results in $paper/$folder/"
     [ "$continues" != - ] || continue
@@ -226,7 +238,19 @@ experiment_command() {  # runs folder, arms, generations, trials, results folder
 }
 if [ "$action" = save ]; then
   # A trial with its compact result (committed, or finished here) is no longer in progress:
-  # its portable checkpoint goes, in every milestone, the finished ones included.
+  # its portable checkpoint goes, in every milestone, the finished ones included, and the
+  # compact results finished here come into the repository in its place (as --collect copies
+  # them), so that no trial leaves the repository as a checkpoint without arriving as a result.
+  # (Before and after: a trial that finishes while this runs is counted too.)
+  copy_all_results() {
+    local m name folder
+    for m in "${milestones[@]}"; do
+      read -r name _ _ _ _ _ folder _ _ <<<"$m"
+      copy_results "$name" "$folder"
+      [ "$copied" -eq 0 ] || echo "paper_experiment.sh: $name: $copied compact results finished here -> $paper/$folder/"
+    done
+  }
+  copy_all_results
   for m in "${milestones[@]}"; do
     read -r name _ _ _ _ _ folder _ _ <<<"$m"
     for f in "$(checkpoints_folder "$folder")"/*.portable-checkpoint; do
@@ -285,6 +309,7 @@ if [ "$action" = save ]; then
       fi
     done
   done
+  copy_all_results
   [ -n "$active" ] || echo "paper_experiment.sh: every milestone finished on this machine: no trial in progress"
   exit $status
 fi

@@ -81,10 +81,17 @@ TEST(PaperExperimentCheckpointsCli, ATrialInProgressContinuesOnANewMachineFromTh
         << folder;
 
   // Finished now: the next --save-checkpoints removes its file, though every milestone is
-  // done here (none is in progress to save), and says so.
+  // done here (none is in progress to save), and says so; the trial's compact results come
+  // into the repository in its place, without a --collect.
+  ASSERT_FALSE(fs::exists(paper + "/results/feedforward-s1.results.json"));
   const auto cleaned = run_shell(script(paper, second, "--save-checkpoints"));
   EXPECT_EQ(cleaned.status, 0) << cleaned.output;
   EXPECT_FALSE(fs::exists(file)) << cleaned.output;
+  for (const char* folder : {"results", "m2/results"})
+    EXPECT_EQ(timeless(paper + "/" + folder + "/feedforward-s1.results.json"),
+              timeless(second + "/" + folder + "/feedforward-s1.results.json"))
+        << folder;
+  EXPECT_NE(cleaned.output.find("M1: 4 compact results finished here -> "), std::string::npos) << cleaned.output;
   EXPECT_NE(cleaned.output.find("M1: feedforward-s1 finished: removed"), std::string::npos) << cleaned.output;
   EXPECT_NE(cleaned.output.find("every milestone finished on this machine"), std::string::npos) << cleaned.output;
 }
