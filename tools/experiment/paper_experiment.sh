@@ -3,8 +3,8 @@
 #
 #   tools/experiment/paper_experiment.sh [--dir DIR] [--workers N]  # run (or resume) the milestones
 #   tools/experiment/paper_experiment.sh --collect [--dir DIR]      # copy the compact results into the repository
-#   tools/experiment/paper_experiment.sh --status [--dir DIR]
-#   tools/experiment/paper_experiment.sh --save-checkpoints [--dir DIR]               # trials in progress -> the repository
+#   tools/experiment/paper_experiment.sh --status [--dir DIR]       # where each milestone stands
+#   tools/experiment/paper_experiment.sh --save-checkpoints [--dir DIR]  # trials in progress -> the repository (before a stop)
 #
 # For a test of the script itself (the paper's sizes are the defaults):
 #   --bin BIN: robozoo-evolve and robozoo-experiment from BIN (no clone, no build, no VERSION);
