@@ -6,11 +6,16 @@
 // that report, its tables and its plot scripts byte for byte (the PNGs exist; their
 // bytes depend on gnuplot's and cairo's builds); and a later milestone's results
 // repeat the milestone's they continue field for field (runs are deterministic, even
-// when a trial ran again from generation 0 on another machine).
+// when a trial ran again from generation 0 on another machine). Every committed portable
+// checkpoint is a trial of its milestone's plan still in progress, made by the pinned version
+// with the milestone's configuration, and one that continues a trial the earlier milestone
+// finished carries that trial's committed result.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <map>
 #include <regex>
 #include <set>
@@ -20,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/experiment/portable_checkpoint.hpp"
 #include "tests/support/subprocess.hpp"
 
 namespace robozoo {
@@ -225,6 +231,65 @@ TEST(PaperResults, ContinuedMilestonesRepeatTheGenerationsOfTheOnesTheyContinue)
     EXPECT_NE(same.output.find("trials in both folders agree over the generations both hold"), std::string::npos)
         << same.output;
   }
+}
+
+TEST(PaperResults, EveryCommittedPortableCheckpointIsATrialInProgressOfItsMilestone) {
+  const std::string root = ROBOZOO_SOURCE_DIR;
+  const std::regex name_rule("([a-z-]+)-s([0-9]+)\\.portable-checkpoint");
+  size_t checked = 0;
+  const std::vector<Milestone> milestones = all_milestones();
+  for (const Milestone& m : milestones) {
+    const std::string folder = root + "/" + m.folder + "/checkpoints";
+    if (!fs::is_directory(folder)) continue;
+    std::string version = read_file(root + "/" + kPaper + "/" + m.version);
+    version = version.substr(0, version.find_first_of("\n "));
+    TempDir carried;  // the compact results the files carry, as <trial>.results.json
+    fs::create_directories(carried / "results");
+    size_t continuing = 0;
+    for (const auto& e : fs::directory_iterator(folder)) {
+      const std::string f = e.path().filename().string();
+      SCOPED_TRACE(m.folder + "/checkpoints/" + f);
+      std::smatch match;
+      ASSERT_TRUE(std::regex_match(f, match, name_rule));
+      const std::string arm = match[1];
+      const long seed = std::stol(match[2]);
+      EXPECT_LE((seed - 1) / 4 + 1, m.trials);
+      // Read as a run would read it: header, sizes, CRC-32s, one run at generation k.
+      const PortableCheckpoint pc = read_portable_checkpoint(e.path().string());
+      const nlohmann::json j = nlohmann::json::parse(pc.results_text);
+      const nlohmann::json& run = j.at("run");
+      EXPECT_EQ(run.at("software_version").get<std::string>(), version.substr(0, 12));
+      EXPECT_EQ(run.at("arm").get<std::string>(), arm);
+      EXPECT_EQ(run.at("seed").get<long>(), seed);
+      EXPECT_EQ(run.at("population").get<int>(), 150);
+      EXPECT_EQ(run.at("steps").get<int>(), 2500);
+      for (const auto& [pointer, value] : m.config) {
+        const nlohmann::json::json_pointer at(pointer);
+        ASSERT_TRUE(run.at("config").contains(at)) << pointer;
+        EXPECT_EQ(run.at("config").at(at), value) << pointer;
+      }
+      EXPECT_GE(pc.generation, 1);
+      EXPECT_LT(pc.generation, m.generations);  // in progress
+      const std::string trial = f.substr(0, f.size() - std::string(kPortableCheckpointExtension).size());
+      if (!m.continues.empty() && fs::exists(root + "/" + m.continues + "/results/" + trial + ".results.json")) {
+        // A trial the earlier milestone finished: at least that milestone's generations.
+        const auto earlier = std::find_if(milestones.begin(), milestones.end(),
+                                          [&](const Milestone& x) { return x.folder == m.continues; });
+        ASSERT_NE(earlier, milestones.end());
+        EXPECT_GE(pc.generation, earlier->generations);
+        std::ofstream(carried / ("results/" + trial + ".results.json")) << pc.results_text;
+        ++continuing;
+      }
+      ++checked;
+    }
+    if (continuing == 0) continue;
+    const Outcome same = run_shell(bin("robozoo-stats") + " '" + carried / "results" + "' --same-as '" + root + "/" +
+                                   m.continues + "/results'");
+    EXPECT_EQ(same.status, 0) << m.folder << "\n" << same.output;
+    EXPECT_NE(same.output.find(std::to_string(continuing) + " trials in both folders agree"), std::string::npos)
+        << same.output;
+  }
+  std::cout << checked << " portable checkpoints checked\n";
 }
 
 }  // namespace
