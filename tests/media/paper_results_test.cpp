@@ -91,45 +91,57 @@ std::vector<std::string> result_files(const std::string& folder) {
   return out;
 }
 
+/// The pinned version's 12-character commit, from the milestone's version file.
+std::string pinned_version(const Milestone& m) {
+  std::string version = read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + kPaper + "/" + m.version);
+  version = version.substr(0, version.find_first_of("\n "));
+  EXPECT_GE(version.size(), 12u) << m.version << ": " << version;
+  return version.substr(0, 12);
+}
+
+/// A compact result's run is trial `arm`-s`seed` of the milestone's plan, made by its pinned
+/// version with its configuration (the generations asked for aside).
+void expect_trial_of(const Milestone& m, const std::string& version, const std::string& arm, long seed,
+                     const nlohmann::json& run) {
+  const std::map<std::string, int> arm_index = {
+      {"feedforward", 0}, {"recurrent", 1}, {"recurrent-sparse", 2}, {"recurrent-zero", 3}};
+  ASSERT_TRUE(arm_index.count(arm)) << arm;
+  // Trial k of arm a has seed 4(k - 1) + a + 1 (docs/experiment.md), k from 1 to the milestone's trials.
+  EXPECT_EQ((seed - 1) % 4, arm_index.at(arm));
+  EXPECT_LE((seed - 1) / 4 + 1, m.trials);
+  EXPECT_EQ(run.at("software_version").get<std::string>(), version);
+  EXPECT_EQ(run.at("arm").get<std::string>(), arm);
+  EXPECT_EQ(run.at("seed").get<long>(), seed);
+  EXPECT_EQ(run.at("population").get<int>(), 150);
+  EXPECT_EQ(run.at("steps").get<int>(), 2500);
+  for (const auto& [pointer, value] : m.config) {
+    const nlohmann::json::json_pointer at(pointer);
+    ASSERT_TRUE(run.at("config").contains(at)) << pointer;
+    EXPECT_EQ(run.at("config").at(at), value) << pointer;
+  }
+}
+
 TEST(PaperResults, EveryCommittedResultIsAFinishedTrialOfThePlanMadeByThePinnedVersion) {
   const auto milestones = committed_milestones();
   ASSERT_FALSE(milestones.empty()) << "no " << kPaper << "/results";
-  const std::map<std::string, int> arm_index = {
-      {"feedforward", 0}, {"recurrent", 1}, {"recurrent-sparse", 2}, {"recurrent-zero", 3}};
   const std::regex name_rule("([a-z-]+)-s([0-9]+)\\.results\\.json");
   for (const Milestone& m : milestones) {
-    std::string version = read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + kPaper + "/" + m.version);
-    version = version.substr(0, version.find_first_of("\n "));
-    ASSERT_GE(version.size(), 12u) << m.version << ": " << version;
+    const std::string version = pinned_version(m);
     std::map<std::string, int> per_arm;
     for (const auto& f : result_files(m.folder)) {
       SCOPED_TRACE(m.folder + "/results/" + f);
       std::smatch match;
       ASSERT_TRUE(std::regex_match(f, match, name_rule));
       const std::string arm = match[1];
-      const long seed = std::stol(match[2]);
-      ASSERT_TRUE(arm_index.count(arm));
-      // Trial k of arm a has seed 4(k - 1) + a + 1 (docs/experiment.md), k from 1 to the milestone's trials.
-      EXPECT_EQ((seed - 1) % 4, arm_index.at(arm));
-      EXPECT_LE((seed - 1) / 4 + 1, m.trials);
       ++per_arm[arm];
       const nlohmann::json j =
           nlohmann::json::parse(read_file(std::string(ROBOZOO_SOURCE_DIR) + "/" + m.folder + "/results/" + f));
       const nlohmann::json& run = j.at("run");
-      EXPECT_EQ(run.at("software_version").get<std::string>(), version.substr(0, 12));
-      EXPECT_EQ(run.at("arm").get<std::string>(), arm);
-      EXPECT_EQ(run.at("seed").get<long>(), seed);
-      EXPECT_EQ(run.at("population").get<int>(), 150);
-      EXPECT_EQ(run.at("steps").get<int>(), 2500);
+      expect_trial_of(m, version, arm, std::stol(match[2]), run);
       EXPECT_EQ(run.at("generations").get<int>(), m.generations);
       EXPECT_EQ(j.at("generations").at("generation").size(), static_cast<size_t>(m.generations));  // finished
       EXPECT_FALSE(j.at("truncated").get<bool>());
       EXPECT_EQ(j.at("undecodable").get<int>(), 0);
-      for (const auto& [pointer, value] : m.config) {
-        const nlohmann::json::json_pointer at(pointer);
-        ASSERT_TRUE(run.at("config").contains(at)) << pointer;
-        EXPECT_EQ(run.at("config").at(at), value) << pointer;
-      }
     }
     for (const auto& [arm, n] : per_arm) EXPECT_LE(n, m.trials) << m.folder << " " << arm;
     if (!m.four_arms) {  // only M1 has the recurrent-sparse and recurrent-zero arms
@@ -241,8 +253,7 @@ TEST(PaperResults, EveryCommittedPortableCheckpointIsATrialInProgressOfItsMilest
   for (const Milestone& m : milestones) {
     const std::string folder = root + "/" + m.folder + "/checkpoints";
     if (!fs::is_directory(folder)) continue;
-    std::string version = read_file(root + "/" + kPaper + "/" + m.version);
-    version = version.substr(0, version.find_first_of("\n "));
+    const std::string version = pinned_version(m);
     TempDir carried;  // the compact results the files carry, as <trial>.results.json
     fs::create_directories(carried / "results");
     size_t continuing = 0;
@@ -251,23 +262,9 @@ TEST(PaperResults, EveryCommittedPortableCheckpointIsATrialInProgressOfItsMilest
       SCOPED_TRACE(m.folder + "/checkpoints/" + f);
       std::smatch match;
       ASSERT_TRUE(std::regex_match(f, match, name_rule));
-      const std::string arm = match[1];
-      const long seed = std::stol(match[2]);
-      EXPECT_LE((seed - 1) / 4 + 1, m.trials);
       // Read as a run would read it: header, sizes, CRC-32s, one run at generation k.
       const PortableCheckpoint pc = read_portable_checkpoint(e.path().string());
-      const nlohmann::json j = nlohmann::json::parse(pc.results_text);
-      const nlohmann::json& run = j.at("run");
-      EXPECT_EQ(run.at("software_version").get<std::string>(), version.substr(0, 12));
-      EXPECT_EQ(run.at("arm").get<std::string>(), arm);
-      EXPECT_EQ(run.at("seed").get<long>(), seed);
-      EXPECT_EQ(run.at("population").get<int>(), 150);
-      EXPECT_EQ(run.at("steps").get<int>(), 2500);
-      for (const auto& [pointer, value] : m.config) {
-        const nlohmann::json::json_pointer at(pointer);
-        ASSERT_TRUE(run.at("config").contains(at)) << pointer;
-        EXPECT_EQ(run.at("config").at(at), value) << pointer;
-      }
+      expect_trial_of(m, version, match[1], std::stol(match[2]), nlohmann::json::parse(pc.results_text).at("run"));
       EXPECT_GE(pc.generation, 1);
       EXPECT_LT(pc.generation, m.generations);  // in progress
       const std::string trial = f.substr(0, f.size() - std::string(kPortableCheckpointExtension).size());
