@@ -49,7 +49,7 @@
 # --save-checkpoints writes the portable checkpoint of each trial in progress of the
 # milestone being run (the first without DIR/<name>.done whose results are not all
 # committed) into the repository beside its compact results (checkpoints/ for M1,
-# m3/checkpoints/, sensitivity/<factor>/checkpoints/, ...; 130-280 kB a trial) and removes
+# m3/checkpoints/, sensitivity/<factor>/checkpoints/, ...; 40-280 kB a trial) and removes
 # those of finished trials, in every milestone, copying their compact results into the
 # repository as --collect does (without its checks): commit them, and the run on a fresh clone
 # continues those trials from there instead of generation 0. A later milestone that continues
