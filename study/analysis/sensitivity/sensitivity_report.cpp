@@ -169,8 +169,10 @@ std::string sensitivity_markdown(const SensitivityReportInputs& in) {
      << " generations (generation record " << p.generation - 1 << ", counted from 0), the **gap** " << p.control_arm
      << " mean minus " << p.experimental_arm << " mean (positive: " << p.control_arm << " fitter), with its " << level
      << " % interval from Student's pooled-variance t; beside it the reference's "
-     << "own gap on the same seeds at the same generation. The factors' tests (gap = 0) are one family under Holm's "
-     << "correction at α = " << csv_number(p.alpha) << "; the reference is not a member. The difference of the "
+     << "own gap on the same seeds at the same generation. The factors' tests (gap = 0) are **secondary**: a family of "
+     << "their own under Holm's correction at α = " << csv_number(p.alpha)
+     << ", apart from the reference's primary test (in the reference's own report), and the reference is not a "
+     << "member. The difference of the "
      << "two gaps has a Welch-Satterthwaite interval that treats them as independent samples: descriptive, not a "
      << "test. A factor whose interval holds both 0 and the reference's gap is inconclusive.\n\n";
   md << "## The gap, factor by factor\n\n";

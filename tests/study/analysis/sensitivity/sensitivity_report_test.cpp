@@ -44,6 +44,10 @@ TEST(SensitivityReport, TheReportSaysWhatWasComparedAndHowToMakeItAgain) {
   EXPECT_EQ(md.rfind("# the study\n\nA note.\n\n", 0), 0u) << md;
   EXPECT_NE(md.find("robozoo 2f4ba41c77a6"), std::string::npos);
   EXPECT_NE(md.find("after 30 generations (generation record 29, counted from 0)"), std::string::npos);
+  EXPECT_NE(md.find("The factors' tests (gap = 0) are **secondary**: a family of their own under Holm's correction at "
+                    "α = 0.05, apart from the reference's primary test"),
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("| bias-1.0 | `growth.bias_input` 0.3 → 1.0 | 22.00 (2) | 11.00 (2) | 11.00 ["), std::string::npos)
       << md;
   EXPECT_NE(md.find("| cap-100 | `growth.max_spheres` 50 → 100 |"), std::string::npos);
