@@ -126,6 +126,7 @@ int main(int argc, char** argv) {
       std::cerr << "robozoo-stats: " << r.analysis.factors.size() << " factors compared at generation "
                 << r.analysis.params.generation;
       if (!r.waiting.empty()) std::cerr << ", " << r.waiting.size() << " without results yet";
+      for (const std::string& f : factors_with_fewer_runs(r.analysis)) std::cerr << "; fewer runs: " << f;
       std::cerr << "\n  wrote";
       for (const auto& f : r.files) std::cerr << " " << f;
       std::cerr << "\n  in " << r.out_dir << "\n";

@@ -149,4 +149,20 @@ SensitivityAnalysis analyze_sensitivity(const std::vector<RunSummary>& reference
   return out;
 }
 
+std::vector<std::string> factors_with_fewer_runs(const SensitivityAnalysis& a) {
+  size_t most_control = 0, most_experimental = 0;
+  for (const FactorResult& f : a.factors) {
+    most_control = std::max(most_control, f.control_seeds.size());
+    most_experimental = std::max(most_experimental, f.experimental_seeds.size());
+  }
+  std::vector<std::string> out;
+  for (const FactorResult& f : a.factors) {
+    if (f.control_seeds.size() == most_control && f.experimental_seeds.size() == most_experimental) continue;
+    out.push_back(f.name + " (" + std::to_string(f.control_seeds.size()) + " " + a.params.control_arm + " and " +
+                  std::to_string(f.experimental_seeds.size()) + " " + a.params.experimental_arm + " runs, against " +
+                  std::to_string(most_control) + " and " + std::to_string(most_experimental) + ")");
+  }
+  return out;
+}
+
 }  // namespace robozoo

@@ -77,4 +77,9 @@ struct SensitivityAnalysis {
 SensitivityAnalysis analyze_sensitivity(const std::vector<RunSummary>& reference,
                                         const std::vector<SensitivityFactor>& factors, const SensitivityParams& params);
 
+/// The factors with fewer runs in an arm than the most any factor has there (a factor still
+/// running, or trials missing), each in words: "cap-100 (6 feedforward and 6 recurrent runs,
+/// against 10 and 10)". Empty when every factor has as many runs as the others.
+std::vector<std::string> factors_with_fewer_runs(const SensitivityAnalysis& a);
+
 }  // namespace robozoo

@@ -199,6 +199,12 @@ std::string sensitivity_markdown(const SensitivityReportInputs& in) {
     for (const auto& w : in.waiting) md << " " << w;
     md << ".\n";
   }
+  const std::vector<std::string> short_factors = factors_with_fewer_runs(a);
+  if (!short_factors.empty()) {
+    md << "- **Fewer runs than the other factors** (still running, or trials missing; compared on the seeds it has):";
+    for (size_t i = 0; i < short_factors.size(); ++i) md << (i == 0 ? " " : "; ") << short_factors[i];
+    md << ".\n";
+  }
   md << "\n## What the evaluations of generation record " << p.generation - 1 << " came to\n\n";
   md << "Shares of the generation's evaluations, pooled over the runs; *simulated* counts the robots that "
      << "completed their steps or stopped early at rest; the others were disqualified (acceleration fault, "

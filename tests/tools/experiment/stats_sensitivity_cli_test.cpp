@@ -86,6 +86,20 @@ TEST(StatsSensitivityCli, ComparesAFactorWithTheReferenceAndMakesItsReportAgain)
   ASSERT_NE(made.find(with_out), std::string::npos);
   made.replace(made.find(with_out), with_out.size(), command);
   EXPECT_EQ(made, report);
+
+  // A factor with fewer runs than the others (one still running) is compared on the seeds it
+  // has, and named on the terminal and in the report.
+  fs::create_directories(t / "partial");
+  fs::copy(t / "study/proportional", t / "partial/complete", fs::copy_options::recursive);
+  fs::copy(t / "study/proportional", t / "partial/running", fs::copy_options::recursive);
+  ASSERT_TRUE(fs::remove(t / "partial/running/results/feedforward-s5.results.json"));
+  const auto p = run_shell(cd + bin("robozoo-stats") + " partial --sensitivity ref/results --no-plots");
+  ASSERT_EQ(p.status, 0) << p.output;
+  EXPECT_NE(p.output.find("2 factors compared at generation 3; fewer runs: running (1 feedforward and 2 recurrent "
+                          "runs, against 2 and 2)\n"),
+            std::string::npos)
+      << p.output;
+  EXPECT_NE(read_file(t / "partial/report.md").find("**Fewer runs than the other factors**"), std::string::npos);
 }
 
 TEST(StatsSensitivityCli, RefusesWhatItCannotCompare) {

@@ -8,6 +8,7 @@
 
 #include "evolve/config/run_config.hpp"
 #include "study/analysis/compare/holm.hpp"
+#include "tests/study/analysis/sensitivity/two_factors.hpp"
 
 namespace robozoo {
 namespace {
@@ -162,6 +163,18 @@ TEST(SensitivityAnalysis, RefusesRunsThatCannotBeCompared) {
   mixed[3].software_version = "v0";
   expect_refused({run("feedforward", 1, 1, config(1.0))}, "different versions", mixed);
   EXPECT_THROW(analyze_sensitivity(reference(), {}, at(0)), std::invalid_argument);
+}
+
+TEST(SensitivityAnalysis, NamesTheFactorsWithFewerRunsThanTheOthers) {
+  SensitivityAnalysis a = robozoo::testing::two_factors();
+  EXPECT_TRUE(factors_with_fewer_runs(a).empty());
+  a.factors[1].experimental_seeds = {2};
+  EXPECT_EQ(factors_with_fewer_runs(a),
+            std::vector<std::string>{"cap-100 (2 feedforward and 1 recurrent runs, against 2 and 2)"});
+  a.factors[0].control_seeds = {1};
+  EXPECT_EQ(factors_with_fewer_runs(a),
+            (std::vector<std::string>{"bias-1.0 (1 feedforward and 2 recurrent runs, against 2 and 2)",
+                                      "cap-100 (2 feedforward and 1 recurrent runs, against 2 and 2)"}));
 }
 
 }  // namespace

@@ -55,6 +55,7 @@ TEST(SensitivityReport, TheReportSaysWhatWasComparedAndHowToMakeItAgain) {
   EXPECT_NE(md.find("inconclusive: the interval holds both 0 and the reference's gap |"), std::string::npos);
   EXPECT_NE(md.find("- bias-1.0: seeds feedforward 1 5; recurrent 2 6."), std::string::npos);
   EXPECT_NE(md.find("- Factors without results yet: no-contact-rule."), std::string::npos);
+  EXPECT_EQ(md.find("Fewer runs"), std::string::npos) << md;
   // Outcome shares of 300 evaluations: simulated (200 + 20) 73.3 %, not simulated 10.0 %.
   EXPECT_NE(md.find("| bias-1.0 | the factor | feedforward | 2 | 300 | 73.3 % | 3.3 % | 13.3 % | 0.0 % | 10.0 % |"),
             std::string::npos)
@@ -62,6 +63,17 @@ TEST(SensitivityReport, TheReportSaysWhatWasComparedAndHowToMakeItAgain) {
   EXPECT_NE(md.find("| cap-100 | the reference | recurrent | 0 | 0 | n/a |"), std::string::npos);
   EXPECT_NE(md.find("## Reproduce\n\n```sh\nbuild/bin/robozoo-stats a --sensitivity b --generation 30\n```\n"),
             std::string::npos);
+}
+
+TEST(SensitivityReport, AFactorWithFewerRunsThanTheOthersIsMarked) {
+  SensitivityReportInputs in;
+  in.analysis = two_factors();
+  in.analysis.factors[1].control_seeds = {1};
+  const std::string md = sensitivity_markdown(in);
+  EXPECT_NE(md.find("- **Fewer runs than the other factors** (still running, or trials missing; compared on the seeds "
+                    "it has): cap-100 (1 feedforward and 2 recurrent runs, against 2 and 2).\n"),
+            std::string::npos)
+      << md;
 }
 
 }  // namespace
